@@ -1,0 +1,48 @@
+# Target settings the event module needs in both build modes (standalone and OpenCV extra module).
+#
+# - C++17 inside the module (public headers stay C++11-clean: OpenCV 4.6 builds its Python bindings and
+#   other modules as C++11 and they include our headers);
+# - Eigen3 (private): small dense least-squares in the estimators;
+# - libusb-1.0 (optional, private): the live DAVIS back-end of EventCapture;
+# - the location of the shared real recordings used by data-driven tests (they skip when it is absent).
+
+get_filename_component(OPENCV_EVENT_MODULE_DIR "${CMAKE_CURRENT_LIST_DIR}/.." ABSOLUTE)
+
+find_package(Eigen3 QUIET NO_MODULE)
+if(NOT TARGET Eigen3::Eigen)
+  find_path(OPENCV_EVENT_EIGEN_INCLUDE_DIR Eigen/Core PATH_SUFFIXES eigen3)
+  if(NOT OPENCV_EVENT_EIGEN_INCLUDE_DIR)
+    message(FATAL_ERROR "opencv_event needs Eigen3 (Debian: apt-get install libeigen3-dev)")
+  endif()
+  add_library(Eigen3::Eigen INTERFACE IMPORTED)
+  set_target_properties(Eigen3::Eigen PROPERTIES INTERFACE_INCLUDE_DIRECTORIES "${OPENCV_EVENT_EIGEN_INCLUDE_DIR}")
+endif()
+
+find_package(PkgConfig QUIET)
+if(PKG_CONFIG_FOUND)
+  pkg_check_modules(OPENCV_EVENT_LIBUSB QUIET IMPORTED_TARGET libusb-1.0)
+endif()
+if(OPENCV_EVENT_LIBUSB_FOUND)
+  message(STATUS "opencv_event: libusb-1.0 ${OPENCV_EVENT_LIBUSB_VERSION} found: live DAVIS back-end enabled")
+else()
+  message(STATUS "opencv_event: libusb-1.0 not found: live DAVIS back-end disabled")
+endif()
+
+# Real recordings beside the checkout (never part of it); tests skip with a message when it is absent.
+get_filename_component(OPENCV_EVENT_SHARED_DATA_DEFAULT "${CMAKE_CURRENT_LIST_DIR}/../../../../shared/data" ABSOLUTE)
+
+function(opencv_event_configure_library target)
+  set_target_properties(${target} PROPERTIES CXX_STANDARD 17 CXX_STANDARD_REQUIRED ON CXX_EXTENSIONS OFF)
+  target_include_directories(${target} PRIVATE "${OPENCV_EVENT_MODULE_DIR}/src")
+  target_link_libraries(${target} PRIVATE Eigen3::Eigen)
+  if(OPENCV_EVENT_LIBUSB_FOUND)
+    target_link_libraries(${target} PRIVATE PkgConfig::OPENCV_EVENT_LIBUSB)
+    target_compile_definitions(${target} PRIVATE OPENCV_EVENT_HAVE_LIBUSB=1)
+  endif()
+endfunction()
+
+function(opencv_event_configure_test target)
+  set_target_properties(${target} PROPERTIES CXX_STANDARD 17 CXX_STANDARD_REQUIRED ON CXX_EXTENSIONS OFF)
+  target_compile_definitions(${target} PRIVATE
+    OPENCV_EVENT_SHARED_DATA_DEFAULT="${OPENCV_EVENT_SHARED_DATA_DEFAULT}")
+endfunction()

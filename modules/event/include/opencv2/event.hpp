@@ -1,0 +1,26 @@
+// This file is part of OpenCV project.
+// It is subject to the license terms in the LICENSE file found in the top-level directory
+// of this distribution and at http://opencv.org/license.html.
+
+#ifndef OPENCV_EVENT_HPP
+#define OPENCV_EVENT_HPP
+
+#include "opencv2/event/types.hpp"
+
+/** @defgroup event Event cameras: lifetime and stereo disparity
+
+Processing for dynamic vision sensors (DVS / DAVIS / Prophesee), which report per-pixel brightness changes
+as a stream of events (t, x, y, polarity) instead of frames. The module estimates, per event, its
+**lifetime** (how long the edge that caused it stays at that pixel, Mueggler et al. @cite Mueggler2015) and,
+for a stereo pair, its **disparity / depth** by the coupled lifetime-and-matching method of Hadviger et al.
+@cite Hadviger2019 with the descriptor of Zou et al. @cite Zou2017.
+
+Events travel as packets: an N x 1 Mat of type event::EVENT_MAT_TYPE or a `std::vector<event::Event>`,
+through the usual InputArray / OutputArray (see event::Event for the layout and why).
+
+@{
+    @defgroup event_types Event records, packets and sensor geometry
+@}
+*/
+
+#endif  // OPENCV_EVENT_HPP

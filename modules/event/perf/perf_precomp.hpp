@@ -1,0 +1,17 @@
+// This file is part of OpenCV project.
+// It is subject to the license terms in the LICENSE file found in the top-level directory
+// of this distribution and at http://opencv.org/license.html.
+
+#ifndef OPENCV_EVENT_PERF_PRECOMP_HPP
+#define OPENCV_EVENT_PERF_PRECOMP_HPP
+
+#include "opencv2/ts.hpp"
+#include "opencv2/event.hpp"
+
+namespace opencv_test {
+using namespace cv::event;
+using cv::event::Event;  // perf:: and cv::cuda also have an Event
+using namespace perf;
+}
+
+#endif

@@ -1,0 +1,14 @@
+#!/usr/bin/env bash
+# README command 2: install dependencies, build both modes, run every test.
+#   bash scripts/test.sh
+# Standalone build -> ctest: opencv_test_event, the perf-test smoke run, the downstream consumer project and
+# contrib_build (OpenCV from source with modules/ as an extra module: opencv_test_event + opencv_perf_event
+# there). Ends with ctest's summary line.
+set -euo pipefail
+repo=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
+start=$(date +%s)
+bash "$repo/scripts/setup.sh"
+bash "$repo/scripts/build.sh"
+cd "$repo/build"
+ctest --output-on-failure --timeout 3600 "$@"
+echo "== test.sh: all tests passed in $(( $(date +%s) - start )) s"
