@@ -6,6 +6,7 @@
 #define OPENCV_EVENT_HPP
 
 #include "opencv2/event/types.hpp"
+#include "opencv2/event/event_surface.hpp"
 
 /** @defgroup event Event cameras: lifetime and stereo disparity
 
@@ -20,6 +21,7 @@ through the usual InputArray / OutputArray (see event::Event for the layout and 
 
 @{
     @defgroup event_types Event records, packets and sensor geometry
+    @defgroup event_surface Surface of active events, time surfaces and event frames
 @}
 */
 
