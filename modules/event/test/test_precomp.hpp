@@ -8,9 +8,35 @@
 #include "opencv2/ts.hpp"
 #include "opencv2/event.hpp"
 
+#include <cstdio>
+#include <fstream>
+#include <sys/stat.h>
+
 namespace opencv_test {
 using namespace cv::event;
 using cv::event::Event;  // perf:: and cv::cuda also have an Event
+
+/** Path of a real recording under ../shared/data (or $OPENCV_EVENT_SHARED_DATA); the test is skipped, with
+a message, when it is absent: the recordings are never part of the repository. */
+inline std::string requireSharedData(const std::string& relative)
+{
+    const char* env = std::getenv("OPENCV_EVENT_SHARED_DATA");
+    const std::string root = env && *env ? std::string(env) : std::string(OPENCV_EVENT_SHARED_DATA_DEFAULT);
+    const std::string path = root + "/" + relative;
+    struct stat st;
+    if (::stat(path.c_str(), &st) != 0)
+        throw SkipTestException("shared recording " + path + " is absent (set OPENCV_EVENT_SHARED_DATA)");
+    return path;
+}
+
+/** Writes @p content to a fresh temporary file with the given suffix and returns its path. */
+inline std::string writeTempFile(const std::string& content, const std::string& suffix)
+{
+    const std::string path = cv::tempfile(suffix.c_str());
+    std::ofstream out(path.c_str(), std::ios::binary);
+    out.write(content.data(), (std::streamsize)content.size());
+    return path;
+}
 }
 
 #endif

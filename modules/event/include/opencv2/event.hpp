@@ -7,6 +7,7 @@
 
 #include "opencv2/event/types.hpp"
 #include "opencv2/event/event_surface.hpp"
+#include "opencv2/event/event_capture.hpp"
 
 /** @defgroup event Event cameras: lifetime and stereo disparity
 
@@ -22,6 +23,7 @@ through the usual InputArray / OutputArray (see event::Event for the layout and 
 @{
     @defgroup event_types Event records, packets and sensor geometry
     @defgroup event_surface Surface of active events, time surfaces and event frames
+    @defgroup event_io Reading recordings and cameras
 @}
 */
 

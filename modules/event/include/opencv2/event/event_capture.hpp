@@ -1,0 +1,162 @@
+// This file is part of OpenCV project.
+// It is subject to the license terms in the LICENSE file found in the top-level directory
+// of this distribution and at http://opencv.org/license.html.
+
+#ifndef OPENCV_EVENT_EVENT_CAPTURE_HPP
+#define OPENCV_EVENT_EVENT_CAPTURE_HPP
+
+#include "opencv2/event/types.hpp"
+
+namespace cv {
+namespace event {
+
+//! @addtogroup event_io
+//! @{
+
+/** @brief Back-ends of EventCapture (apiPreference). EVENT_CAP_ANY picks one from the file's first bytes. */
+enum EventCaptureAPIs
+{
+    EVENT_CAP_ANY = 0,      //!< detect from the content (magic bytes), then the extension
+    EVENT_CAP_TEXT = 1,     //!< text, one event per line (RPG ECD `t x y p`, TUM `t x y p camera`, ...)
+    EVENT_CAP_PROPHESEE_DAT = 2  //!< Prophesee .dat (decoded CD events)
+};
+
+/** @brief Properties of EventCapture (get / set; those marked "before open" are read by open()). */
+enum EventCaptureProperties
+{
+    EVENT_CAP_PROP_SENSOR_WIDTH = 1,       //!< sensor width [px]; 0 when the source does not say (settable before open)
+    EVENT_CAP_PROP_SENSOR_HEIGHT = 2,      //!< sensor height [px]; 0 when unknown (settable before open)
+    EVENT_CAP_PROP_WINDOW_US = 3,          //!< read() delivers the events of consecutive windows of this length [us] (default 10000)
+    EVENT_CAP_PROP_BATCH_EVENTS = 4,       //!< when > 0, read() delivers batches of this many events instead of time windows
+    EVENT_CAP_PROP_POS_US = 5,             //!< start of the next time window, or the timestamp of the last delivered event [us]
+    EVENT_CAP_PROP_EVENTS_DELIVERED = 6,   //!< events delivered by read()/retrieve() so far
+    EVENT_CAP_PROP_DURATION_US = 7,        //!< duration of the recording when the format tells it without reading it all, else -1
+    EVENT_CAP_PROP_FIRST_TIMESTAMP_US = 8, //!< timestamp of the first event (after open), or -1 when the source is empty
+    EVENT_CAP_PROP_REJECTED_OUTSIDE = 9,   //!< events outside the sensor: counted, never delivered
+    EVENT_CAP_PROP_TIME_BACKWARDS = 10,    //!< events older than their predecessor (handled by EVENT_CAP_PROP_TIME_ORDER_POLICY)
+    EVENT_CAP_PROP_TIME_ORDER_POLICY = 11, //!< see EventTimeOrderPolicy (default EVENT_TIME_ORDER_CLAMP)
+    EVENT_CAP_PROP_EXCEPTION_MODE = 12,    //!< 1 (default): errors raise cv::Exception; 0: open()/read() return false, see getLastError()
+    EVENT_CAP_PROP_RIGHT_TIME_OFFSET_US = 13, //!< stereo, before open: added to the right camera's timestamps [us]
+    EVENT_CAP_PROP_STEREO = 14,            //!< 1 when the source delivers both cameras of a stereo pair (read-only)
+    EVENT_CAP_PROP_TEXT_TIME_UNIT = 100,   //!< text, before open: EventTimeUnit of the t column (default EVENT_TIME_UNIT_AUTO)
+    EVENT_CAP_PROP_TEXT_ONE_BASED = 101,   //!< text, before open: 1 when x and y start at 1 (TUM stereo recordings)
+    EVENT_CAP_PROP_TEXT_COLUMN_T = 102,    //!< text, before open: 0-based column of t (default 0)
+    EVENT_CAP_PROP_TEXT_COLUMN_X = 103,    //!< text, before open: column of x (default 1)
+    EVENT_CAP_PROP_TEXT_COLUMN_Y = 104,    //!< text, before open: column of y (default 2)
+    EVENT_CAP_PROP_TEXT_COLUMN_P = 105,    //!< text, before open: column of the polarity (default 3; > 0 is ON)
+    EVENT_CAP_PROP_TEXT_COLUMN_CAMERA = 106, //!< text, before open: column of the camera id, -1 = none (default: the 5th column when there is one)
+    EVENT_CAP_PROP_TEXT_LEFT_CAMERA_VALUE = 107 //!< text, before open: value of the camera column that means the left camera (default 0; 1 for TUM's Fan recording)
+};
+
+/** @brief What EventCapture does with an event older than the one before it (a sensor reset, a bad file). */
+enum EventTimeOrderPolicy
+{
+    EVENT_TIME_ORDER_KEEP = 0,   //!< deliver it as it is (the stream is then not time-ordered)
+    EVENT_TIME_ORDER_CLAMP = 1,  //!< deliver it with the previous timestamp: nothing lost, output stays ordered
+    EVENT_TIME_ORDER_DROP = 2,   //!< do not deliver it (counted in EVENT_CAP_PROP_TIME_BACKWARDS)
+    EVENT_TIME_ORDER_ERROR = 3   //!< raise an error naming the file and the event
+};
+
+/** @brief Unit of the time column of text recordings. */
+enum EventTimeUnit
+{
+    EVENT_TIME_UNIT_AUTO = 0,     //!< seconds when the first timestamp has a decimal point or exponent, else microseconds
+    EVENT_TIME_UNIT_SECONDS = 1,
+    EVENT_TIME_UNIT_MILLISECONDS = 2,
+    EVENT_TIME_UNIT_MICROSECONDS = 3,
+    EVENT_TIME_UNIT_NANOSECONDS = 4
+};
+
+/** @brief Reads event recordings (and, with the live back-ends, cameras), like cv::VideoCapture for frames.
+
+@code
+cv::event::EventCapture cap("recording.aedat4");
+cap.set(cv::event::EVENT_CAP_PROP_WINDOW_US, 10000);   // 10 ms packets
+cv::Mat events;                                          // N x 1 EVENT_MAT_TYPE, or std::vector<Event>
+while (cap.read(events))
+    process(events);
+@endcode
+
+read() returns consecutive time windows (an empty packet for a window without events) or, with
+EVENT_CAP_PROP_BATCH_EVENTS, fixed-size batches; it returns false at the end of the stream. Memory stays
+bounded by one chunk of the file plus one batch, whatever the length of the recording.
+
+Errors (missing file, unknown format, truncated or corrupt data) raise cv::Exception with a message that
+names the file, the byte offset where it applies and what is wrong. This differs from cv::VideoCapture on
+purpose: a recording that silently stops early looks like a short recording. With
+EVENT_CAP_PROP_EXCEPTION_MODE = 0 open() / read() return false instead and getLastError() holds the
+message.
+
+Events outside the sensor are never delivered; they are counted (EVENT_CAP_PROP_REJECTED_OUTSIDE).
+Events that go back in time are counted and handled by EVENT_CAP_PROP_TIME_ORDER_POLICY.
+*/
+class CV_EXPORTS_W EventCapture
+{
+public:
+    CV_WRAP EventCapture();
+    /** @brief Opens @p source (see open()). */
+    CV_WRAP explicit EventCapture(const String& source, int apiPreference = EVENT_CAP_ANY);
+    virtual ~EventCapture();
+
+    /** @brief Opens a recording.
+    @param source a file path.
+    @param apiPreference an EventCaptureAPIs value; EVENT_CAP_ANY detects the format from the content.
+    @return true on success (errors raise cv::Exception unless the exception mode is off).
+    Options set with set() before open() (sensor size, text columns, ...) apply to it. */
+    CV_WRAP virtual bool open(const String& source, int apiPreference = EVENT_CAP_ANY);
+
+    /** @brief Opens a stereo pair stored as two single-camera recordings.
+    read() then delivers both streams merged in time order (left first on equal timestamps) with
+    Event::camera set, the right timestamps shifted by EVENT_CAP_PROP_RIGHT_TIME_OFFSET_US.
+    A single file holding both cameras (e.g. a text file with a camera column) is opened with open() and
+    merged the same way. */
+    CV_WRAP virtual bool openStereo(const String& leftSource, const String& rightSource,
+                                    int apiPreference = EVENT_CAP_ANY);
+
+    /** @brief Opens a recording with options given as (property id, value) pairs, like cv::VideoCapture. */
+    CV_WRAP virtual bool open(const String& source, int apiPreference, const std::vector<int>& params);
+
+    CV_WRAP virtual bool isOpened() const;
+
+    /** @brief Closes the source; the options set before open stay. Always returns promptly. */
+    CV_WRAP virtual void release();
+
+    /** @brief Reads the next packet into an internal buffer. @return false at the end of the stream. */
+    CV_WRAP virtual bool grab();
+
+    /** @brief The packet of the last grab(): N x 1 EVENT_MAT_TYPE (or a std::vector<Event>). */
+    CV_WRAP virtual bool retrieve(OutputArray events);
+
+    /** @brief grab() + retrieve(). @return false, with an empty packet, at the end of the stream. */
+    CV_WRAP virtual bool read(OutputArray events);
+
+    CV_WRAP virtual double get(int propId) const;
+    CV_WRAP virtual bool set(int propId, double value);
+
+    /** @brief Name of the back-end in use ("TEXT", "AEDAT4", ...), empty when closed. */
+    CV_WRAP String getBackendName() const;
+
+    /** @brief The source passed to open(). */
+    CV_WRAP String getSource() const;
+
+    /** @brief Message of the last error (useful when the exception mode is off), empty if none. */
+    CV_WRAP String getLastError() const;
+
+    /** @brief Sensor size (width x height), empty when the source does not tell it. */
+    CV_WRAP Size getSensorSize() const;
+
+    class Impl;
+protected:
+    Ptr<Impl> impl;
+};
+
+/** @brief Names the format of a recording from its first bytes (and its extension when the content is
+ambiguous): "TEXT", "PROPHESEE_DAT", ...; empty when it is not recognised or cannot be opened. */
+CV_EXPORTS_W String detectEventFileFormat(const String& path);
+
+//! @}
+
+}  // namespace event
+}  // namespace cv
+
+#endif  // OPENCV_EVENT_EVENT_CAPTURE_HPP

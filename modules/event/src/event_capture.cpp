@@ -1,0 +1,510 @@
+// This file is part of OpenCV project.
+// It is subject to the license terms in the LICENSE file found in the top-level directory
+// of this distribution and at http://opencv.org/license.html.
+
+// EventCapture: picks a back-end, then turns its decoded chunks into the packets read() delivers
+// (time windows or fixed counts), enforcing the sensor bounds and the time-order policy on the way.
+
+#include "event_reader.hpp"
+#include "file_input.hpp"
+
+namespace cv {
+namespace event {
+
+using namespace detail;
+
+namespace {
+
+bool hasPrefix(const std::string& s, const char* prefix)
+{
+    return s.compare(0, std::strlen(prefix), prefix) == 0;
+}
+
+std::string extensionOf(const String& path)
+{
+    const size_t dot = path.find_last_of('.');
+    const size_t slash = path.find_last_of('/');
+    if (dot == String::npos || (slash != String::npos && dot < slash))
+        return std::string();
+    std::string ext = path.substr(dot + 1);
+    for (char& c : ext)
+        c = (char)std::tolower((unsigned char)c);
+    return ext;
+}
+
+// Prophesee .dat and .raw both start with "% " header lines; .dat headers name their event type.
+bool looksLikeProphesseeDat(const std::string& head, const String& path)
+{
+    if (!hasPrefix(head, "% "))
+        return false;
+    return head.find("% Data file containing") != std::string::npos || extensionOf(path) == "dat";
+}
+
+bool looksLikeText(const std::string& head)
+{
+    if (head.empty())
+        return false;
+    for (unsigned char c : head)
+        if (!(std::isprint(c) || std::isspace(c)))
+            return false;
+    return true;
+}
+
+}  // namespace
+
+String detectEventFileFormat(const String& path)
+{
+    const std::string head = readFilePrefix(path, 4096);
+    if (head.empty())
+        return String();
+    if (looksLikeProphesseeDat(head, path))
+        return "PROPHESEE_DAT";
+    if (looksLikeText(head))
+        return "TEXT";
+    return String();
+}
+
+class EventCapture::Impl
+{
+public:
+    // ---- options (survive release(); read by open()) ----
+    ReaderOptions options;
+    int64 windowUs = 10000;
+    int64 batchEvents = 0;
+    int timeOrderPolicy = EVENT_TIME_ORDER_CLAMP;
+    int64 rightTimeOffset = 0;
+    bool exceptionMode = true;
+
+    // ---- state of the open source ----
+    Ptr<EventReader> reader;
+    String source, lastError;
+    Size sensor;
+    std::vector<Event> raw;       // last chunk from the back-end
+    std::vector<Event> pending;   // accepted events not yet delivered
+    size_t pendingPos = 0;
+    bool readerDone = true;
+    std::vector<Event> batch;     // the grabbed packet
+    bool grabbed = false;
+    int64 windowStart = 0;
+    bool windowStarted = false;
+    int64 firstTimestamp = -1;
+    int64 lastAccepted = 0;
+    bool haveLast = false;
+    int64 lastDelivered = -1;
+    int64 delivered = 0, rejectedOutside = 0, backwards = 0;
+    // A decoding error is raised when delivery reaches it, not when the chunk holding it is read ahead:
+    // every event before the error is still delivered.
+    String deferredError;
+    int deferredCode = Error::StsOk;
+
+    void close()
+    {
+        reader.release();
+        source.clear();
+        sensor = Size();
+        raw.clear();
+        pending.clear();
+        pendingPos = 0;
+        readerDone = true;
+        batch.clear();
+        grabbed = false;
+        windowStarted = false;
+        firstTimestamp = -1;
+        haveLast = false;
+        lastDelivered = -1;
+        delivered = rejectedOutside = backwards = 0;
+        deferredError.clear();
+        deferredCode = Error::StsOk;
+    }
+
+    static Ptr<EventReader> makeReader(const String& path, int api, const ReaderOptions& opt)
+    {
+        int backend = api;
+        if (backend == EVENT_CAP_ANY)
+        {
+            const String fmt = detectEventFileFormat(path);
+            if (fmt == "PROPHESEE_DAT")
+                backend = EVENT_CAP_PROPHESEE_DAT;
+            else if (fmt == "TEXT")
+                backend = EVENT_CAP_TEXT;
+            else
+            {
+                FileInput probe(path);  // raises the precise reason when the file cannot be read at all
+                if (probe.size() == 0)
+                    CV_Error_(Error::StsError, ("%s: empty file, not a recording", path.c_str()));
+                CV_Error_(Error::StsError, ("%s: unknown event file format (first bytes match no supported "
+                                            "format)", path.c_str()));
+            }
+        }
+        switch (backend)
+        {
+        case EVENT_CAP_TEXT: return openTextReader(path, opt);
+        case EVENT_CAP_PROPHESEE_DAT: return openDatReader(path, opt);
+        default:
+            CV_Error_(Error::StsBadArg, ("%s: apiPreference %d is not an available EventCapture back-end",
+                                         path.c_str(), api));
+        }
+    }
+
+    void open(const String& path, int api)
+    {
+        close();
+        lastError.clear();
+        Ptr<EventReader> r = makeReader(path, api, options);
+        if (r->isStereo())
+        {
+            // One file, two cameras: read each camera with its own reader and merge them in time.
+            ReaderOptions left = options, right = options;
+            left.cameraFilter = CAMERA_LEFT;
+            right.cameraFilter = CAMERA_RIGHT;
+            r = openStereoMerge(makeReader(path, api, left), makeReader(path, api, right), rightTimeOffset);
+        }
+        start(r, path);
+    }
+
+    void openStereo(const String& leftPath, const String& rightPath, int api)
+    {
+        close();
+        lastError.clear();
+        Ptr<EventReader> l = makeReader(leftPath, api, options), r = makeReader(rightPath, api, options);
+        if (l->isStereo() || r->isStereo())
+            CV_Error_(Error::StsBadArg, ("openStereo(%s, %s): each file must hold one camera",
+                                         leftPath.c_str(), rightPath.c_str()));
+        start(openStereoMerge(l, r, rightTimeOffset), leftPath + " + " + rightPath);
+    }
+
+    void start(const Ptr<EventReader>& r, const String& name)
+    {
+        reader = r;
+        source = name;
+        sensor = options.sensorSize.empty() ? reader->sensorSize() : options.sensorSize;
+        readerDone = false;
+        if (fill())
+            firstTimestamp = pending[pendingPos].t;
+    }
+
+    // Moves the next decoded chunk through the bounds and time-order checks into `pending`.
+    // Returns false when nothing is left.
+    bool fill()
+    {
+        if (pendingPos < pending.size())
+            return true;
+        pending.clear();
+        pendingPos = 0;
+        while (pending.empty() && !readerDone)
+        {
+            raw.clear();
+            try
+            {
+                if (!reader->next(raw))
+                    readerDone = true;
+                accept();
+            }
+            catch (const cv::Exception& e)
+            {
+                // Deliver what was decoded before the error, then raise it (raiseDeferredError).
+                deferredError = e.err;
+                deferredCode = e.code;
+                readerDone = true;
+            }
+        }
+        return !pending.empty();
+    }
+
+    void raiseDeferredError()
+    {
+        if (deferredCode == Error::StsOk)
+            return;
+        const String msg = deferredError;
+        const int code = deferredCode;
+        deferredError.clear();
+        deferredCode = Error::StsOk;
+        cv::error(code, msg, "EventCapture::read", __FILE__, __LINE__);
+    }
+
+    void accept()
+    {
+        const bool bounded = !sensor.empty();
+        for (const Event& e0 : raw)
+        {
+            Event e = e0;
+            if (bounded ? ((unsigned)e.x >= (unsigned)sensor.width || (unsigned)e.y >= (unsigned)sensor.height)
+                        : (e.x < 0 || e.y < 0))
+            {
+                rejectedOutside++;
+                continue;
+            }
+            if (haveLast && e.t < lastAccepted)
+            {
+                backwards++;
+                switch (timeOrderPolicy)
+                {
+                case EVENT_TIME_ORDER_KEEP: break;
+                case EVENT_TIME_ORDER_CLAMP: e.t = lastAccepted; break;
+                case EVENT_TIME_ORDER_DROP: continue;
+                default:
+                    CV_Error_(Error::StsError, ("%s: event %lld goes back in time (t=%lld us after %lld us)",
+                                                source.c_str(), (long long)(delivered + (int64)(pending.size() - pendingPos)),
+                                                (long long)e.t, (long long)lastAccepted));
+                }
+            }
+            if (!haveLast || e.t > lastAccepted)
+                lastAccepted = e.t;
+            haveLast = true;
+            pending.push_back(e);
+        }
+    }
+
+    bool grab()
+    {
+        batch.clear();
+        grabbed = false;
+        if (!reader)
+            return false;
+        if (batchEvents > 0)
+        {
+            while ((int64)batch.size() < batchEvents && fill())
+            {
+                const size_t take = std::min((size_t)(batchEvents - (int64)batch.size()), pending.size() - pendingPos);
+                batch.insert(batch.end(), pending.begin() + pendingPos, pending.begin() + pendingPos + take);
+                pendingPos += take;
+            }
+            if (batch.empty())
+                raiseDeferredError();
+            grabbed = !batch.empty();
+            return grabbed;
+        }
+        if (!fill())
+        {
+            raiseDeferredError();
+            return false;  // nothing left: the stream has ended
+        }
+        if (!windowStarted)
+        {
+            windowStart = pending[pendingPos].t;
+            windowStarted = true;
+        }
+        const int64 end = windowStart + windowUs;
+        while (fill())
+        {
+            size_t i = pendingPos;
+            while (i < pending.size() && pending[i].t < end)
+                i++;
+            batch.insert(batch.end(), pending.begin() + pendingPos, pending.begin() + i);
+            pendingPos = i;
+            if (i < pending.size())
+                break;
+        }
+        windowStart = end;
+        grabbed = true;  // an empty window is still a window
+        return true;
+    }
+
+    void retrieve(OutputArray events)
+    {
+        if (batch.empty())
+            events.release();
+        else
+            Mat(batch).copyTo(events);
+        delivered += (int64)batch.size();
+        if (!batch.empty())
+            lastDelivered = batch.back().t;
+        batch.clear();
+    }
+};
+
+EventCapture::EventCapture() : impl(makePtr<Impl>()) {}
+
+EventCapture::EventCapture(const String& source, int apiPreference) : impl(makePtr<Impl>())
+{
+    open(source, apiPreference);
+}
+
+EventCapture::~EventCapture() {}
+
+bool EventCapture::open(const String& source, int apiPreference)
+{
+    try
+    {
+        impl->open(source, apiPreference);
+        return true;
+    }
+    catch (const cv::Exception& e)
+    {
+        impl->close();
+        impl->lastError = e.err;
+        if (impl->exceptionMode)
+            throw;
+        return false;
+    }
+}
+
+bool EventCapture::openStereo(const String& leftSource, const String& rightSource, int apiPreference)
+{
+    try
+    {
+        impl->openStereo(leftSource, rightSource, apiPreference);
+        return true;
+    }
+    catch (const cv::Exception& e)
+    {
+        impl->close();
+        impl->lastError = e.err;
+        if (impl->exceptionMode)
+            throw;
+        return false;
+    }
+}
+
+bool EventCapture::open(const String& source, int apiPreference, const std::vector<int>& params)
+{
+    if (params.size() % 2 != 0)
+        CV_Error_(Error::StsBadArg, ("%s: EventCapture::open: params must be (property id, value) pairs", source.c_str()));
+    for (size_t i = 0; i < params.size(); i += 2)
+        if (!set(params[i], params[i + 1]))
+            CV_Error_(Error::StsBadArg, ("%s: EventCapture::open: property %d cannot be set to %d", source.c_str(),
+                                         params[i], params[i + 1]));
+    return open(source, apiPreference);
+}
+
+bool EventCapture::isOpened() const { return !impl->reader.empty(); }
+
+void EventCapture::release() { impl->close(); }
+
+bool EventCapture::grab()
+{
+    try
+    {
+        return impl->grab();
+    }
+    catch (const cv::Exception& e)
+    {
+        impl->lastError = e.err;
+        impl->readerDone = true;
+        impl->pending.clear();
+        impl->pendingPos = 0;
+        if (impl->exceptionMode)
+            throw;
+        return false;
+    }
+}
+
+bool EventCapture::retrieve(OutputArray events)
+{
+    if (!impl->grabbed)
+    {
+        events.release();
+        return false;
+    }
+    impl->retrieve(events);
+    return true;
+}
+
+bool EventCapture::read(OutputArray events)
+{
+    if (!grab())
+    {
+        events.release();
+        return false;
+    }
+    return retrieve(events);
+}
+
+double EventCapture::get(int propId) const
+{
+    const Impl& s = *impl;
+    switch (propId)
+    {
+    case EVENT_CAP_PROP_SENSOR_WIDTH: return s.reader ? s.sensor.width : s.options.sensorSize.width;
+    case EVENT_CAP_PROP_SENSOR_HEIGHT: return s.reader ? s.sensor.height : s.options.sensorSize.height;
+    case EVENT_CAP_PROP_WINDOW_US: return (double)s.windowUs;
+    case EVENT_CAP_PROP_BATCH_EVENTS: return (double)s.batchEvents;
+    case EVENT_CAP_PROP_POS_US:
+        if (s.batchEvents == 0 && s.windowStarted)
+            return (double)s.windowStart;
+        return (double)(s.lastDelivered >= 0 ? s.lastDelivered : s.firstTimestamp);
+    case EVENT_CAP_PROP_EVENTS_DELIVERED: return (double)s.delivered;
+    case EVENT_CAP_PROP_DURATION_US: return s.reader ? (double)s.reader->durationUs() : -1.0;
+    case EVENT_CAP_PROP_FIRST_TIMESTAMP_US: return (double)s.firstTimestamp;
+    case EVENT_CAP_PROP_REJECTED_OUTSIDE: return (double)s.rejectedOutside;
+    case EVENT_CAP_PROP_TIME_BACKWARDS: return (double)s.backwards;
+    case EVENT_CAP_PROP_TIME_ORDER_POLICY: return s.timeOrderPolicy;
+    case EVENT_CAP_PROP_EXCEPTION_MODE: return s.exceptionMode ? 1 : 0;
+    case EVENT_CAP_PROP_RIGHT_TIME_OFFSET_US: return (double)s.rightTimeOffset;
+    case EVENT_CAP_PROP_STEREO: return s.reader && s.reader->isStereo() ? 1 : 0;
+    case EVENT_CAP_PROP_TEXT_TIME_UNIT: return s.options.textTimeUnit;
+    case EVENT_CAP_PROP_TEXT_ONE_BASED: return s.options.textOneBased ? 1 : 0;
+    case EVENT_CAP_PROP_TEXT_COLUMN_T: return s.options.textColumnT;
+    case EVENT_CAP_PROP_TEXT_COLUMN_X: return s.options.textColumnX;
+    case EVENT_CAP_PROP_TEXT_COLUMN_Y: return s.options.textColumnY;
+    case EVENT_CAP_PROP_TEXT_COLUMN_P: return s.options.textColumnP;
+    case EVENT_CAP_PROP_TEXT_COLUMN_CAMERA: return s.options.textColumnCamera;
+    case EVENT_CAP_PROP_TEXT_LEFT_CAMERA_VALUE: return s.options.textLeftCameraValue;
+    default: return 0;
+    }
+}
+
+bool EventCapture::set(int propId, double value)
+{
+    Impl& s = *impl;
+    const int v = cvRound(value);
+    auto column = [&](int& field) {
+        if (v < 0 || v > 15)
+            return false;
+        field = v;
+        return true;
+    };
+    switch (propId)
+    {
+    case EVENT_CAP_PROP_SENSOR_WIDTH:
+        if (v < 0 || v > 32768) return false;
+        s.options.sensorSize.width = v;
+        if (s.reader && v > 0) s.sensor.width = v;
+        return true;
+    case EVENT_CAP_PROP_SENSOR_HEIGHT:
+        if (v < 0 || v > 32768) return false;
+        s.options.sensorSize.height = v;
+        if (s.reader && v > 0) s.sensor.height = v;
+        return true;
+    case EVENT_CAP_PROP_WINDOW_US:
+        if (!(value >= 1)) return false;
+        s.windowUs = (int64)value;
+        return true;
+    case EVENT_CAP_PROP_BATCH_EVENTS:
+        if (value < 0) return false;
+        s.batchEvents = (int64)value;
+        return true;
+    case EVENT_CAP_PROP_TIME_ORDER_POLICY:
+        if (v < EVENT_TIME_ORDER_KEEP || v > EVENT_TIME_ORDER_ERROR) return false;
+        s.timeOrderPolicy = v;
+        return true;
+    case EVENT_CAP_PROP_EXCEPTION_MODE: s.exceptionMode = v != 0; return true;
+    case EVENT_CAP_PROP_RIGHT_TIME_OFFSET_US: s.rightTimeOffset = (int64)std::llround(value); return true;
+    case EVENT_CAP_PROP_TEXT_TIME_UNIT:
+        if (v < EVENT_TIME_UNIT_AUTO || v > EVENT_TIME_UNIT_NANOSECONDS) return false;
+        s.options.textTimeUnit = v;
+        return true;
+    case EVENT_CAP_PROP_TEXT_ONE_BASED: s.options.textOneBased = v != 0; return true;
+    case EVENT_CAP_PROP_TEXT_COLUMN_T: return column(s.options.textColumnT);
+    case EVENT_CAP_PROP_TEXT_COLUMN_X: return column(s.options.textColumnX);
+    case EVENT_CAP_PROP_TEXT_COLUMN_Y: return column(s.options.textColumnY);
+    case EVENT_CAP_PROP_TEXT_COLUMN_P: return column(s.options.textColumnP);
+    case EVENT_CAP_PROP_TEXT_COLUMN_CAMERA:
+        if (v < -2 || v > 15) return false;
+        s.options.textColumnCamera = v;
+        return true;
+    case EVENT_CAP_PROP_TEXT_LEFT_CAMERA_VALUE:
+        if (v != 0 && v != 1) return false;
+        s.options.textLeftCameraValue = v;
+        return true;
+    default: return false;
+    }
+}
+
+String EventCapture::getBackendName() const { return impl->reader ? impl->reader->name() : String(); }
+String EventCapture::getSource() const { return impl->source; }
+String EventCapture::getLastError() const { return impl->lastError; }
+Size EventCapture::getSensorSize() const { return impl->reader ? impl->sensor : impl->options.sensorSize; }
+
+}  // namespace event
+}  // namespace cv

@@ -1,0 +1,59 @@
+// This file is part of OpenCV project.
+// It is subject to the license terms in the LICENSE file found in the top-level directory
+// of this distribution and at http://opencv.org/license.html.
+
+#ifndef OPENCV_EVENT_SRC_EVENT_READER_HPP
+#define OPENCV_EVENT_SRC_EVENT_READER_HPP
+
+// The interface between EventCapture (batching, bounds, time order, properties) and the format back-ends
+// (decoding only). A back-end decodes its file in order and never holds more than one chunk.
+
+#include "precomp.hpp"
+
+namespace cv {
+namespace event {
+namespace detail {
+
+/** Options EventCapture passes to a back-end when opening (from properties set before open()). */
+struct ReaderOptions
+{
+    Size sensorSize;               // user-given sensor size; empty = take it from the file
+    int textTimeUnit = EVENT_TIME_UNIT_AUTO;
+    bool textOneBased = false;
+    int textColumnT = 0, textColumnX = 1, textColumnY = 2, textColumnP = 3;
+    int textColumnCamera = -2;     // -2: the 5th column when present, -1: none
+    int textLeftCameraValue = 0;
+    int cameraFilter = -1;         // >= 0: deliver only the events of this CameraId (one side of a stereo file)
+};
+
+class EventReader
+{
+public:
+    virtual ~EventReader() {}
+    /** Back-end name as EventCapture::getBackendName() reports it. */
+    virtual String name() const = 0;
+    /** Decodes the next events in file order and appends them to @p out. Returns false once the stream is
+    exhausted (then nothing was appended). Raises cv::Exception on corrupt data. */
+    virtual bool next(std::vector<Event>& out) = 0;
+    /** Sensor size the file declares; empty when it does not. */
+    virtual Size sensorSize() const = 0;
+    /** Recording length when the format tells it without decoding everything, else -1. */
+    virtual int64 durationUs() const { return -1; }
+    /** True when the file holds both cameras of a stereo pair (a camera column / two streams). */
+    virtual bool isStereo() const { return false; }
+};
+
+Ptr<EventReader> openTextReader(const String& path, const ReaderOptions& options);
+Ptr<EventReader> openDatReader(const String& path, const ReaderOptions& options);
+/** Merges a left and a right stream in time order (left first on ties), setting Event::camera and adding
+@p rightTimeOffset to the right stream's timestamps. Each side is read in chunks: memory stays bounded. */
+Ptr<EventReader> openStereoMerge(const Ptr<EventReader>& left, const Ptr<EventReader>& right, int64 rightTimeOffset);
+
+/** Events a back-end decodes per next() call: large enough to amortise the call, small enough for cache. */
+static const size_t kReaderChunk = 16384;
+
+}  // namespace detail
+}  // namespace event
+}  // namespace cv
+
+#endif

@@ -1,0 +1,307 @@
+// This file is part of OpenCV project.
+// It is subject to the license terms in the LICENSE file found in the top-level directory
+// of this distribution and at http://opencv.org/license.html.
+
+#include "test_precomp.hpp"
+
+namespace opencv_test { namespace {
+
+std::vector<Event> readAll(EventCapture& cap)
+{
+    std::vector<Event> all, packet;
+    while (cap.read(packet))
+        all.insert(all.end(), packet.begin(), packet.end());
+    return all;
+}
+
+// Asserts that a cv::Exception is raised whose message contains every fragment.
+template<typename F>
+void expectErrorMentioning(F f, const std::vector<std::string>& fragments)
+{
+    try
+    {
+        f();
+        ADD_FAILURE() << "no exception";
+    }
+    catch (const cv::Exception& e)
+    {
+        for (const std::string& frag : fragments)
+            EXPECT_NE(std::string::npos, e.err.find(frag)) << "'" << frag << "' not in: " << e.err;
+    }
+}
+
+TEST(Event_Capture_Text, rpg_seconds_with_comments_in_time_windows)
+{
+    const std::string path = writeTempFile(
+        "# RPG-style events.txt\n"
+        "0.000100000 10 20 1\n"
+        "0.000250000 11 20 0\n"
+        "\n"
+        "0.012000000 12 21 1\r\n"   // CRLF line, second window
+        "0.035500000 13 22 0\n",    // fourth window (the third is empty)
+        ".txt");
+    EventCapture cap(path);
+    ASSERT_TRUE(cap.isOpened());
+    EXPECT_EQ("TEXT", cap.getBackendName());
+    EXPECT_EQ(100.0, cap.get(EVENT_CAP_PROP_FIRST_TIMESTAMP_US));
+    cap.set(EVENT_CAP_PROP_WINDOW_US, 10000);
+
+    std::vector<Event> w;
+    ASSERT_TRUE(cap.read(w));  // [100, 10100)
+    ASSERT_EQ(2u, w.size());
+    EXPECT_EQ(Event(100, 10, 20, POLARITY_ON), w[0]);
+    EXPECT_EQ(Event(250, 11, 20, POLARITY_OFF), w[1]);
+    ASSERT_TRUE(cap.read(w));  // [10100, 20100)
+    ASSERT_EQ(1u, w.size());
+    EXPECT_EQ(12000, w[0].t);
+    ASSERT_TRUE(cap.read(w));  // [20100, 30100): no events, still a window
+    EXPECT_TRUE(w.empty());
+    EXPECT_EQ(30100.0, cap.get(EVENT_CAP_PROP_POS_US));
+    ASSERT_TRUE(cap.read(w));
+    ASSERT_EQ(1u, w.size());
+    EXPECT_EQ(Event(35500, 13, 22, POLARITY_OFF), w[0]);
+    EXPECT_FALSE(cap.read(w));
+    EXPECT_TRUE(w.empty());
+    EXPECT_EQ(4.0, cap.get(EVENT_CAP_PROP_EVENTS_DELIVERED));
+    std::remove(path.c_str());
+}
+
+TEST(Event_Capture_Text, stereo_camera_column_one_based_and_batches)
+{
+    // TUM layout: t_us x y p retina, retina 1 = left; 1-based coordinates as an option.
+    const std::string path = writeTempFile("1000 1 1 1 1\n1005 128 128 0 0\n1010 5 7 -1 1\n", ".dat");
+    EventCapture cap;
+    std::vector<int> params = { EVENT_CAP_PROP_TEXT_ONE_BASED, 1, EVENT_CAP_PROP_TEXT_LEFT_CAMERA_VALUE, 1,
+                                EVENT_CAP_PROP_SENSOR_WIDTH, 128, EVENT_CAP_PROP_SENSOR_HEIGHT, 128,
+                                EVENT_CAP_PROP_BATCH_EVENTS, 2 };
+    ASSERT_TRUE(cap.open(path, EVENT_CAP_TEXT, params));
+    EXPECT_EQ(Size(128, 128), cap.getSensorSize());
+    std::vector<Event> b;
+    ASSERT_TRUE(cap.read(b));
+    ASSERT_EQ(2u, b.size());
+    EXPECT_EQ(Event(1000, 0, 0, POLARITY_ON, CAMERA_LEFT), b[0]);
+    EXPECT_EQ(Event(1005, 127, 127, POLARITY_OFF, CAMERA_RIGHT), b[1]);
+    ASSERT_TRUE(cap.read(b));
+    ASSERT_EQ(1u, b.size());
+    EXPECT_EQ(Event(1010, 4, 6, POLARITY_OFF, CAMERA_LEFT), b[0]);
+    EXPECT_FALSE(cap.read(b));
+    std::remove(path.c_str());
+}
+
+TEST(Event_Capture_Text, size_header_line_and_out_of_sensor_events_are_counted)
+{
+    const std::string path = writeTempFile("4 3\n0.1 0 0 1\n0.2 4 0 1\n0.3 3 2 0\n0.4 1 3 1\n", ".txt");
+    EventCapture cap(path);
+    EXPECT_EQ(Size(4, 3), cap.getSensorSize());
+    std::vector<Event> all = readAll(cap);
+    ASSERT_EQ(2u, all.size());
+    EXPECT_EQ(Event(100000, 0, 0, POLARITY_ON), all[0]);
+    EXPECT_EQ(Event(300000, 3, 2, POLARITY_OFF), all[1]);
+    EXPECT_EQ(2.0, cap.get(EVENT_CAP_PROP_REJECTED_OUTSIDE));
+    std::remove(path.c_str());
+}
+
+TEST(Event_Capture_Text, time_order_policies)
+{
+    const std::string path = writeTempFile("100 0 0 1\n300 1 0 1\n200 2 0 1\n400 3 0 1\n", ".txt");
+    const int policies[] = { EVENT_TIME_ORDER_KEEP, EVENT_TIME_ORDER_CLAMP, EVENT_TIME_ORDER_DROP };
+    const int64 expectedT[3][4] = { { 100, 300, 200, 400 }, { 100, 300, 300, 400 }, { 100, 300, 400, -1 } };
+    for (int k = 0; k < 3; k++)
+    {
+        EventCapture cap;
+        cap.set(EVENT_CAP_PROP_TIME_ORDER_POLICY, policies[k]);
+        cap.set(EVENT_CAP_PROP_BATCH_EVENTS, 100);
+        ASSERT_TRUE(cap.open(path));
+        std::vector<Event> all = readAll(cap);
+        ASSERT_EQ(k == 2 ? 3u : 4u, all.size()) << "policy " << policies[k];
+        for (size_t i = 0; i < all.size(); i++)
+            EXPECT_EQ(expectedT[k][i], all[i].t) << "policy " << policies[k] << " event " << i;
+        EXPECT_EQ(1.0, cap.get(EVENT_CAP_PROP_TIME_BACKWARDS));
+    }
+    EventCapture strict;
+    strict.set(EVENT_CAP_PROP_TIME_ORDER_POLICY, EVENT_TIME_ORDER_ERROR);
+    ASSERT_TRUE(strict.open(path));
+    expectErrorMentioning([&]() { readAll(strict); }, { path, "back in time" });
+    std::remove(path.c_str());
+}
+
+TEST(Event_Capture_Text, malformed_line_names_file_offset_and_line)
+{
+    const std::string path = writeTempFile("0.1 1 2 1\n0.2 1 x 0\n", ".txt");
+    EventCapture cap(path);
+    std::vector<Event> b;
+    expectErrorMentioning([&]() { readAll(cap); }, { path, "byte 10", "line 2", "not a number" });
+
+    EventCapture quiet;
+    quiet.set(EVENT_CAP_PROP_EXCEPTION_MODE, 0);
+    ASSERT_TRUE(quiet.open(path));
+    EXPECT_FALSE(quiet.read(b));
+    EXPECT_NE(std::string::npos, quiet.getLastError().find("line 2"));
+    std::remove(path.c_str());
+}
+
+TEST(Event_Capture, missing_directory_empty_and_unknown_inputs)
+{
+    const std::string missing = cv::tempfile(".txt");
+    expectErrorMentioning([&]() { EventCapture cap(missing); }, { missing, "cannot open" });
+
+    const std::string dir = cv::tempfile("_dir");
+    ASSERT_EQ(0, mkdir(dir.c_str(), 0700));
+    expectErrorMentioning([&]() { EventCapture cap(dir); }, { dir, "directory" });
+    rmdir(dir.c_str());
+
+    const std::string empty = writeTempFile("", ".txt");
+    expectErrorMentioning([&]() { EventCapture cap(empty); }, { empty, "empty" });
+    std::remove(empty.c_str());
+
+    const std::string binary = writeTempFile(std::string("\x01\x02\x03\x00\xff garbage", 12), ".bin");
+    expectErrorMentioning([&]() { EventCapture cap(binary); }, { binary, "unknown event file format" });
+    EventCapture quiet;
+    quiet.set(EVENT_CAP_PROP_EXCEPTION_MODE, 0);
+    EXPECT_FALSE(quiet.open(binary));
+    EXPECT_FALSE(quiet.isOpened());
+    EXPECT_NE(std::string::npos, quiet.getLastError().find(binary));
+    std::remove(binary.c_str());
+}
+
+TEST(Event_Capture_Text, stereo_file_grouped_by_camera_is_merged_in_time)
+{
+    // Right camera first, then left: each camera ordered, the file as a whole not.
+    const std::string path = writeTempFile("10 1 0 1 1\n30 2 0 1 1\n50 3 0 1 1\n"
+                                           "20 4 0 1 0\n30 5 0 1 0\n60 6 0 1 0\n", ".txt");
+    EventCapture cap;
+    cap.set(EVENT_CAP_PROP_BATCH_EVENTS, 4);
+    cap.set(EVENT_CAP_PROP_RIGHT_TIME_OFFSET_US, 1);
+    ASSERT_TRUE(cap.open(path));
+    std::vector<Event> all = readAll(cap);
+    ASSERT_EQ(6u, all.size());
+    const int x[] = { 1, 4, 5, 2, 3, 6 };           // right times shifted by +1: 11, 31, 51
+    const int64 t[] = { 11, 20, 30, 31, 51, 60 };
+    const int cam[] = { 1, 0, 0, 1, 1, 0 };
+    for (int i = 0; i < 6; i++)
+    {
+        EXPECT_EQ(x[i], all[i].x) << i;
+        EXPECT_EQ(t[i], all[i].t) << i;
+        EXPECT_EQ(cam[i], all[i].camera) << i;
+    }
+    EXPECT_EQ(0.0, cap.get(EVENT_CAP_PROP_TIME_BACKWARDS));
+    std::remove(path.c_str());
+}
+
+TEST(Event_Capture_Text, two_files_open_as_a_stereo_pair)
+{
+    const std::string l = writeTempFile("100 1 1 1\n300 2 2 0\n", ".txt");
+    const std::string r = writeTempFile("200 3 3 1\n300 4 4 1\n", ".txt");
+    EventCapture cap;
+    cap.set(EVENT_CAP_PROP_BATCH_EVENTS, 10);
+    ASSERT_TRUE(cap.openStereo(l, r));
+    EXPECT_EQ(1.0, cap.get(EVENT_CAP_PROP_STEREO));
+    std::vector<Event> all = readAll(cap);
+    ASSERT_EQ(4u, all.size());
+    EXPECT_EQ(Event(100, 1, 1, 1, CAMERA_LEFT), all[0]);
+    EXPECT_EQ(Event(200, 3, 3, 1, CAMERA_RIGHT), all[1]);
+    EXPECT_EQ(Event(300, 2, 2, 0, CAMERA_LEFT), all[2]);  // left first on equal timestamps
+    EXPECT_EQ(Event(300, 4, 4, 1, CAMERA_RIGHT), all[3]);
+    std::remove(l.c_str());
+    std::remove(r.c_str());
+}
+
+// ---- Prophesee .dat ---------------------------------------------------------------------------------
+
+std::string datRecord(uint32_t t, int x, int y, int p)
+{
+    const uint32_t data = (uint32_t)x | ((uint32_t)y << 14) | ((uint32_t)p << 28);
+    std::string r(8, '\0');
+    for (int i = 0; i < 4; i++)
+    {
+        r[i] = (char)((t >> (8 * i)) & 0xFF);
+        r[4 + i] = (char)((data >> (8 * i)) & 0xFF);
+    }
+    return r;
+}
+
+TEST(Event_Capture_Dat, decodes_records_and_unwraps_32bit_time)
+{
+    std::string content = "% Data file containing Event2D events.\n% Version 2\n% Width 640\n% Height 480\n";
+    content += std::string("\x00\x08", 2);
+    content += datRecord(10, 5, 6, 1);
+    content += datRecord(0xFFFFFFF0u, 639, 479, 0);
+    content += datRecord(0x00000005u, 7, 8, 1);  // after a wrap: 2^32 + 5
+    const std::string path = writeTempFile(content, ".dat");
+    EXPECT_EQ("PROPHESEE_DAT", detectEventFileFormat(path));
+    EventCapture cap(path);
+    EXPECT_EQ("PROPHESEE_DAT", cap.getBackendName());
+    EXPECT_EQ(Size(640, 480), cap.getSensorSize());
+    cap.set(EVENT_CAP_PROP_BATCH_EVENTS, 10);
+    std::vector<Event> all = readAll(cap);
+    ASSERT_EQ(3u, all.size());
+    EXPECT_EQ(Event(10, 5, 6, POLARITY_ON), all[0]);
+    EXPECT_EQ(Event(0xFFFFFFF0LL, 639, 479, POLARITY_OFF), all[1]);
+    EXPECT_EQ(Event((1LL << 32) + 5, 7, 8, POLARITY_ON), all[2]);
+    EXPECT_EQ(0.0, cap.get(EVENT_CAP_PROP_TIME_BACKWARDS));
+    std::remove(path.c_str());
+}
+
+TEST(Event_Capture_Dat, truncated_record_is_an_error_with_offset)
+{
+    std::string content = "% Data file containing Event2D events.\n";
+    const size_t header = content.size() + 2;
+    content += std::string("\x00\x08", 2) + datRecord(1, 1, 1, 1) + datRecord(2, 2, 2, 0).substr(0, 5);
+    const std::string path = writeTempFile(content, ".dat");
+    expectErrorMentioning([&]() { EventCapture cap(path); },
+                          { path, "byte " + std::to_string(header + 8), "truncated" });
+    std::remove(path.c_str());
+}
+
+// ---- real recordings (../shared/data; skipped when absent) --------------------------------------------
+
+TEST(Event_Capture_Real, tum_fan_stereo_text_counts)
+{
+    const std::string path = requireSharedData("stereo_dvs128_tum/Fan_disp8.dat");
+    EventCapture cap;
+    // shared/data/README.md calls the coordinates 1-based (1..128), but the file holds x = 0 and y = 0
+    // (11 events) and never 128: it is 0-based, and with that every event lies on the 128 x 128 sensor.
+    std::vector<int> params = { EVENT_CAP_PROP_TEXT_LEFT_CAMERA_VALUE, 1,
+                                EVENT_CAP_PROP_SENSOR_WIDTH, 128, EVENT_CAP_PROP_SENSOR_HEIGHT, 128,
+                                EVENT_CAP_PROP_WINDOW_US, 100000 };
+    ASSERT_TRUE(cap.open(path, EVENT_CAP_ANY, params));
+    EXPECT_EQ("TEXT", cap.getBackendName());
+    int64 n = 0, left = 0, first = -1, last = -1;
+    std::vector<Event> packet;
+    while (cap.read(packet))
+        for (const Event& e : packet)
+        {
+            n++;
+            left += e.camera == CAMERA_LEFT;
+            if (first < 0) first = e.t;
+            last = e.t;
+        }
+    EXPECT_EQ(136233, n);  // shared/data/README.md
+    EXPECT_EQ(0.0, cap.get(EVENT_CAP_PROP_REJECTED_OUTSIDE));
+    // The file stores retina 1 then retina 0, each time-ordered: the stereo merge delivers one ordered stream.
+    EXPECT_EQ(1.0, cap.get(EVENT_CAP_PROP_STEREO));
+    EXPECT_EQ(0.0, cap.get(EVENT_CAP_PROP_TIME_BACKWARDS));
+    EXPECT_EQ(72746, left);  // retina 1 lines in the file
+    EXPECT_NEAR(9.8e6, (double)(last - first), 0.1e6);
+}
+
+TEST(Event_Capture_Real, ncars_dat_counts_and_ranges)
+{
+    const std::string path = requireSharedData("format_samples/tonic_sample_ncars.dat");
+    EventCapture cap(path);
+    EXPECT_EQ("PROPHESEE_DAT", cap.getBackendName());
+    cap.set(EVENT_CAP_PROP_BATCH_EVENTS, 1000);
+    std::vector<Event> all = readAll(cap);
+    ASSERT_EQ(2009u, all.size());  // shared/data/README.md: 2,009 events, 0.1 s, x 0..77, y 0..41
+    int maxX = 0, maxY = 0, minX = 1 << 20, minY = 1 << 20;
+    for (const Event& e : all)
+    {
+        maxX = std::max(maxX, (int)e.x); maxY = std::max(maxY, (int)e.y);
+        minX = std::min(minX, (int)e.x); minY = std::min(minY, (int)e.y);
+    }
+    EXPECT_EQ(0, minX); EXPECT_EQ(77, maxX);
+    EXPECT_EQ(0, minY); EXPECT_EQ(41, maxY);
+    EXPECT_NEAR(1e5, (double)(all.back().t - all.front().t), 1e4);
+}
+
+}} // namespace
