@@ -8,7 +8,7 @@ set -euo pipefail
 repo=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 start=$(date +%s)
 bash "$repo/scripts/setup.sh"
-bash "$repo/scripts/build.sh"
+bash "$repo/scripts/build.sh" -DOPENCV_EVENT_BUILD_CONTRIB_TEST=ON
 cd "$repo/build"
 ctest --output-on-failure --timeout 3600 "$@"
 echo "== test.sh: all tests passed in $(( $(date +%s) - start )) s"
