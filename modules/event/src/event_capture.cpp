@@ -32,12 +32,22 @@ std::string extensionOf(const String& path)
     return ext;
 }
 
-// Prophesee .dat and .raw both start with "% " header lines; .dat headers name their event type.
-bool looksLikeProphesseeDat(const std::string& head, const String& path)
+// Prophesee .dat and .raw both start with "% " header lines: .dat headers name their event type, RAW headers
+// their encoding; the extension decides only when neither line is there.
+bool looksLikePropheseeDat(const std::string& head, const String& path)
 {
     if (!hasPrefix(head, "% "))
         return false;
-    return head.find("% Data file containing") != std::string::npos || extensionOf(path) == "dat";
+    if (head.find("% Data file containing") != std::string::npos)
+        return true;
+    return extensionOf(path) == "dat" && head.find("% evt ") == std::string::npos &&
+           head.find("% format EVT") == std::string::npos;
+}
+
+bool looksLikePropheseeRaw(const std::string& head)
+{
+    return hasPrefix(head, "% ") && (head.find("% evt ") != std::string::npos ||
+                                     head.find("% format EVT") != std::string::npos);
 }
 
 bool looksLikeText(const std::string& head)
@@ -57,8 +67,10 @@ String detectEventFileFormat(const String& path)
     const std::string head = readFilePrefix(path, 4096);
     if (head.empty())
         return String();
-    if (looksLikeProphesseeDat(head, path))
+    if (looksLikePropheseeDat(head, path))
         return "PROPHESEE_DAT";
+    if (looksLikePropheseeRaw(head))
+        return "PROPHESEE_RAW";
     if (looksLikeText(head))
         return "TEXT";
     return String();
@@ -125,6 +137,8 @@ public:
             const String fmt = detectEventFileFormat(path);
             if (fmt == "PROPHESEE_DAT")
                 backend = EVENT_CAP_PROPHESEE_DAT;
+            else if (fmt == "PROPHESEE_RAW")
+                backend = EVENT_CAP_PROPHESEE_RAW;
             else if (fmt == "TEXT")
                 backend = EVENT_CAP_TEXT;
             else
@@ -140,6 +154,7 @@ public:
         {
         case EVENT_CAP_TEXT: return openTextReader(path, opt);
         case EVENT_CAP_PROPHESEE_DAT: return openDatReader(path, opt);
+        case EVENT_CAP_PROPHESEE_RAW: return openPropheseeRawReader(path, opt);
         default:
             CV_Error_(Error::StsBadArg, ("%s: apiPreference %d is not an available EventCapture back-end",
                                          path.c_str(), api));
@@ -432,6 +447,7 @@ double EventCapture::get(int propId) const
     case EVENT_CAP_PROP_EXCEPTION_MODE: return s.exceptionMode ? 1 : 0;
     case EVENT_CAP_PROP_RIGHT_TIME_OFFSET_US: return (double)s.rightTimeOffset;
     case EVENT_CAP_PROP_STEREO: return s.reader && s.reader->isStereo() ? 1 : 0;
+    case EVENT_CAP_PROP_SKIPPED: return s.reader ? (double)s.reader->skippedEvents() : 0.0;
     case EVENT_CAP_PROP_TEXT_TIME_UNIT: return s.options.textTimeUnit;
     case EVENT_CAP_PROP_TEXT_ONE_BASED: return s.options.textOneBased ? 1 : 0;
     case EVENT_CAP_PROP_TEXT_COLUMN_T: return s.options.textColumnT;

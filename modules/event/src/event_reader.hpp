@@ -39,12 +39,15 @@ public:
     virtual Size sensorSize() const = 0;
     /** Recording length when the format tells it without decoding everything, else -1. */
     virtual int64 durationUs() const { return -1; }
+    /** Events the file holds but that cannot be delivered (e.g. CD events before the first time base). */
+    virtual int64 skippedEvents() const { return 0; }
     /** True when the file holds both cameras of a stereo pair (a camera column / two streams). */
     virtual bool isStereo() const { return false; }
 };
 
 Ptr<EventReader> openTextReader(const String& path, const ReaderOptions& options);
 Ptr<EventReader> openDatReader(const String& path, const ReaderOptions& options);
+Ptr<EventReader> openPropheseeRawReader(const String& path, const ReaderOptions& options);
 /** Merges a left and a right stream in time order (left first on ties), setting Event::camera and adding
 @p rightTimeOffset to the right stream's timestamps. Each side is read in chunks: memory stays bounded. */
 Ptr<EventReader> openStereoMerge(const Ptr<EventReader>& left, const Ptr<EventReader>& right, int64 rightTimeOffset);

@@ -18,7 +18,8 @@ enum EventCaptureAPIs
 {
     EVENT_CAP_ANY = 0,      //!< detect from the content (magic bytes), then the extension
     EVENT_CAP_TEXT = 1,     //!< text, one event per line (RPG ECD `t x y p`, TUM `t x y p camera`, ...)
-    EVENT_CAP_PROPHESEE_DAT = 2  //!< Prophesee .dat (decoded CD events)
+    EVENT_CAP_PROPHESEE_DAT = 2, //!< Prophesee .dat (decoded CD events)
+    EVENT_CAP_PROPHESEE_RAW = 3  //!< Prophesee .raw, EVT 2.0 and EVT 3.0 encodings
 };
 
 /** @brief Properties of EventCapture (get / set; those marked "before open" are read by open()). */
@@ -38,6 +39,7 @@ enum EventCaptureProperties
     EVENT_CAP_PROP_EXCEPTION_MODE = 12,    //!< 1 (default): errors raise cv::Exception; 0: open()/read() return false, see getLastError()
     EVENT_CAP_PROP_RIGHT_TIME_OFFSET_US = 13, //!< stereo, before open: added to the right camera's timestamps [us]
     EVENT_CAP_PROP_STEREO = 14,            //!< 1 when the source delivers both cameras of a stereo pair (read-only)
+    EVENT_CAP_PROP_SKIPPED = 15,           //!< events in the file that cannot be delivered, e.g. before the first time base (read-only)
     EVENT_CAP_PROP_TEXT_TIME_UNIT = 100,   //!< text, before open: EventTimeUnit of the t column (default EVENT_TIME_UNIT_AUTO)
     EVENT_CAP_PROP_TEXT_ONE_BASED = 101,   //!< text, before open: 1 when x and y start at 1 (TUM stereo recordings)
     EVENT_CAP_PROP_TEXT_COLUMN_T = 102,    //!< text, before open: 0-based column of t (default 0)
