@@ -67,12 +67,16 @@ String detectEventFileFormat(const String& path)
     const std::string head = readFilePrefix(path, 4096);
     if (head.empty())
         return String();
+    if (hasPrefix(head, "#!AER-DAT1") || hasPrefix(head, "#!AER-DAT2"))
+        return "AEDAT2";
     if (looksLikePropheseeDat(head, path))
         return "PROPHESEE_DAT";
     if (looksLikePropheseeRaw(head))
         return "PROPHESEE_RAW";
     if (looksLikeText(head))
         return "TEXT";
+    if (hasPrefix(head, "#") && head.find("AEChip") != std::string::npos)
+        return "AEDAT2";  // AEDAT 1.0: '#' header lines without a version line, then binary records
     return String();
 }
 
@@ -139,6 +143,8 @@ public:
                 backend = EVENT_CAP_PROPHESEE_DAT;
             else if (fmt == "PROPHESEE_RAW")
                 backend = EVENT_CAP_PROPHESEE_RAW;
+            else if (fmt == "AEDAT2")
+                backend = EVENT_CAP_AEDAT2;
             else if (fmt == "TEXT")
                 backend = EVENT_CAP_TEXT;
             else
@@ -155,6 +161,7 @@ public:
         case EVENT_CAP_TEXT: return openTextReader(path, opt);
         case EVENT_CAP_PROPHESEE_DAT: return openDatReader(path, opt);
         case EVENT_CAP_PROPHESEE_RAW: return openPropheseeRawReader(path, opt);
+        case EVENT_CAP_AEDAT2: return openAedat2Reader(path, opt);
         default:
             CV_Error_(Error::StsBadArg, ("%s: apiPreference %d is not an available EventCapture back-end",
                                          path.c_str(), api));
