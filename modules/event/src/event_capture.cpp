@@ -69,6 +69,8 @@ String detectEventFileFormat(const String& path)
         return String();
     if (hasPrefix(head, "#!AER-DAT1") || hasPrefix(head, "#!AER-DAT2"))
         return "AEDAT2";
+    if (hasPrefix(head, "#!AER-DAT3"))
+        return "AEDAT3";
     if (looksLikePropheseeDat(head, path))
         return "PROPHESEE_DAT";
     if (looksLikePropheseeRaw(head))
@@ -145,6 +147,8 @@ public:
                 backend = EVENT_CAP_PROPHESEE_RAW;
             else if (fmt == "AEDAT2")
                 backend = EVENT_CAP_AEDAT2;
+            else if (fmt == "AEDAT3")
+                backend = EVENT_CAP_AEDAT3;
             else if (fmt == "TEXT")
                 backend = EVENT_CAP_TEXT;
             else
@@ -162,6 +166,7 @@ public:
         case EVENT_CAP_PROPHESEE_DAT: return openDatReader(path, opt);
         case EVENT_CAP_PROPHESEE_RAW: return openPropheseeRawReader(path, opt);
         case EVENT_CAP_AEDAT2: return openAedat2Reader(path, opt);
+        case EVENT_CAP_AEDAT3: return openAedat3Reader(path, opt);
         default:
             CV_Error_(Error::StsBadArg, ("%s: apiPreference %d is not an available EventCapture back-end",
                                          path.c_str(), api));
