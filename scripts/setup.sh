@@ -8,7 +8,8 @@ set -euo pipefail
 
 cache=${OPENCV_EVENT_CACHE:-/var/cache/opencv_event}
 packages=(build-essential cmake ninja-build ccache pkg-config git xz-utils dpkg-dev
-          libopencv-dev libeigen3-dev libgtest-dev libusb-1.0-0-dev libpng-dev libjpeg-dev zlib1g-dev)
+          libopencv-dev libeigen3-dev libgtest-dev libusb-1.0-0-dev liblz4-dev libzstd-dev
+          libpng-dev libjpeg-dev zlib1g-dev)
 
 sudo=()
 if [ "$(id -u)" != 0 ]; then

@@ -71,6 +71,8 @@ String detectEventFileFormat(const String& path)
         return "AEDAT2";
     if (hasPrefix(head, "#!AER-DAT3"))
         return "AEDAT3";
+    if (hasPrefix(head, "#!AER-DAT4"))
+        return "AEDAT4";
     if (looksLikePropheseeDat(head, path))
         return "PROPHESEE_DAT";
     if (looksLikePropheseeRaw(head))
@@ -149,6 +151,8 @@ public:
                 backend = EVENT_CAP_AEDAT2;
             else if (fmt == "AEDAT3")
                 backend = EVENT_CAP_AEDAT3;
+            else if (fmt == "AEDAT4")
+                backend = EVENT_CAP_AEDAT4;
             else if (fmt == "TEXT")
                 backend = EVENT_CAP_TEXT;
             else
@@ -167,6 +171,7 @@ public:
         case EVENT_CAP_PROPHESEE_RAW: return openPropheseeRawReader(path, opt);
         case EVENT_CAP_AEDAT2: return openAedat2Reader(path, opt);
         case EVENT_CAP_AEDAT3: return openAedat3Reader(path, opt);
+        case EVENT_CAP_AEDAT4: return openAedat4Reader(path, opt);
         default:
             CV_Error_(Error::StsBadArg, ("%s: apiPreference %d is not an available EventCapture back-end",
                                          path.c_str(), api));
