@@ -8,6 +8,7 @@
 #include "opencv2/event/types.hpp"
 #include "opencv2/event/event_surface.hpp"
 #include "opencv2/event/event_capture.hpp"
+#include "opencv2/event/event_writer.hpp"
 
 /** @defgroup event Event cameras: lifetime and stereo disparity
 
