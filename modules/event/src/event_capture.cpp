@@ -465,6 +465,7 @@ double EventCapture::get(int propId) const
     case EVENT_CAP_PROP_RIGHT_TIME_OFFSET_US: return (double)s.rightTimeOffset;
     case EVENT_CAP_PROP_STEREO: return s.reader && s.reader->isStereo() ? 1 : 0;
     case EVENT_CAP_PROP_SKIPPED: return s.reader ? (double)s.reader->skippedEvents() : 0.0;
+    case EVENT_CAP_PROP_PROGRESS: return s.reader ? s.reader->progress() : -1.0;
     case EVENT_CAP_PROP_TEXT_TIME_UNIT: return s.options.textTimeUnit;
     case EVENT_CAP_PROP_TEXT_ONE_BASED: return s.options.textOneBased ? 1 : 0;
     case EVENT_CAP_PROP_TEXT_COLUMN_T: return s.options.textColumnT;

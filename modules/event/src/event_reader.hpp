@@ -41,6 +41,8 @@ public:
     virtual int64 durationUs() const { return -1; }
     /** Events the file holds but that cannot be delivered (e.g. CD events before the first time base). */
     virtual int64 skippedEvents() const { return 0; }
+    /** Share of the file decoded so far, in [0, 1]; -1 when unknown (e.g. a pipe). */
+    virtual double progress() const { return -1; }
     /** True when the file holds both cameras of a stereo pair (a camera column / two streams). */
     virtual bool isStereo() const { return false; }
 };

@@ -33,6 +33,8 @@ public:
     /** Offset of the next byte read() or readLine() returns. */
     int64 offset() const { return fileOffset_ - (int64)(end_ - pos_); }
     int64 size() const { return size_; }
+    /** offset() / size(), or -1 when the size is unknown. */
+    double progress() const { return size_ > 0 ? (double)offset() / (double)size_ : -1.0; }
 
     /** Reads up to @p n bytes; returns how many were read (fewer only at the end of the file). */
     size_t read(void* dst, size_t n);

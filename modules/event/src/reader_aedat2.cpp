@@ -76,6 +76,7 @@ public:
 
     String name() const CV_OVERRIDE { return "AEDAT2"; }
     Size sensorSize() const CV_OVERRIDE { return size_; }
+    double progress() const CV_OVERRIDE { return in_.progress(); }
 
     bool next(std::vector<Event>& out) CV_OVERRIDE
     {

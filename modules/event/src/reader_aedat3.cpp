@@ -62,6 +62,7 @@ public:
 
     String name() const CV_OVERRIDE { return "AEDAT3"; }
     Size sensorSize() const CV_OVERRIDE { return size_; }
+    double progress() const CV_OVERRIDE { return in_.progress(); }
     int64 skippedEvents() const CV_OVERRIDE { return invalid_; }
 
     bool next(std::vector<Event>& out) CV_OVERRIDE

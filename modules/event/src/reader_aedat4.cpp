@@ -60,6 +60,7 @@ public:
 
     String name() const CV_OVERRIDE { return "AEDAT4"; }
     Size sensorSize() const CV_OVERRIDE { return size_; }
+    double progress() const CV_OVERRIDE { return in_.progress(); }
     bool isStereo() const CV_OVERRIDE { return stereo_; }
 
     bool next(std::vector<Event>& out) CV_OVERRIDE

@@ -53,6 +53,7 @@ public:
 
     String name() const CV_OVERRIDE { return "PROPHESEE_DAT"; }
     Size sensorSize() const CV_OVERRIDE { return size_; }
+    double progress() const CV_OVERRIDE { return in_.progress(); }
 
     bool next(std::vector<Event>& out) CV_OVERRIDE
     {

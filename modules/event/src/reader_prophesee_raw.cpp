@@ -69,6 +69,7 @@ public:
 
     String name() const CV_OVERRIDE { return version_ == 3 ? "PROPHESEE_EVT3" : "PROPHESEE_EVT2"; }
     Size sensorSize() const CV_OVERRIDE { return size_; }
+    double progress() const CV_OVERRIDE { return in_.progress(); }
     int64 skippedEvents() const CV_OVERRIDE { return skipped_; }
 
     bool next(std::vector<Event>& out) CV_OVERRIDE

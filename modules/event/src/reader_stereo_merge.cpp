@@ -32,6 +32,10 @@ public:
     String name() const CV_OVERRIDE { return side_[0].reader->name(); }
     Size sensorSize() const CV_OVERRIDE { return size_; }
     bool isStereo() const CV_OVERRIDE { return true; }
+    double progress() const CV_OVERRIDE
+    {
+        return std::min(side_[0].reader->progress(), side_[1].reader->progress());
+    }
     int64 skippedEvents() const CV_OVERRIDE
     {
         return side_[0].reader->skippedEvents() + side_[1].reader->skippedEvents();

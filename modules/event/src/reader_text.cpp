@@ -70,6 +70,7 @@ public:
     String name() const CV_OVERRIDE { return "TEXT"; }
     bool isStereo() const CV_OVERRIDE { return camera_ >= 0; }
     Size sensorSize() const CV_OVERRIDE { return size_; }
+    double progress() const CV_OVERRIDE { return in_.progress(); }
 
     bool next(std::vector<Event>& out) CV_OVERRIDE
     {

@@ -43,6 +43,7 @@ enum EventCaptureProperties
     EVENT_CAP_PROP_RIGHT_TIME_OFFSET_US = 13, //!< stereo, before open: added to the right camera's timestamps [us]
     EVENT_CAP_PROP_STEREO = 14,            //!< 1 when the source delivers both cameras of a stereo pair (read-only)
     EVENT_CAP_PROP_SKIPPED = 15,           //!< events in the file that cannot be delivered, e.g. before the first time base (read-only)
+    EVENT_CAP_PROP_PROGRESS = 16,          //!< share of the file decoded so far, 0..1 (read ahead by one chunk); -1 when unknown
     EVENT_CAP_PROP_TEXT_TIME_UNIT = 100,   //!< text, before open: EventTimeUnit of the t column (default EVENT_TIME_UNIT_AUTO)
     EVENT_CAP_PROP_TEXT_ONE_BASED = 101,   //!< text, before open: 1 when x and y start at 1 (TUM stereo recordings)
     EVENT_CAP_PROP_TEXT_COLUMN_T = 102,    //!< text, before open: 0-based column of t (default 0)

@@ -1,0 +1,23 @@
+# ctest `event_info_cli`: event_info on a fixture whose facts are known by construction, and on a missing
+# file (exit status 1, the error names the file).
+file(MAKE_DIRECTORY "${WORK_DIR}")
+set(fixture "${WORK_DIR}/three_events.txt")
+file(WRITE "${fixture}" "# fixture\n8 6\n0.001 1 2 1 0\n0.002 3 4 0 1\n0.005 7 5 1 1\n0.006 9 9 1 0\n")
+execute_process(COMMAND "${EVENT_INFO}" --json "${fixture}" RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+message("${out}${err}")
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "event_info failed on the fixture (${rc})")
+endif()
+# 4 lines, one outside the 8 x 6 sensor (9, 9); ON 2 of the 3 delivered; cameras: left 1, right 2.
+foreach(expected [["format": "TEXT"]] [["width": 8]] [["height": 6]] [["stereo": true]] [["events": 3]]
+                 [["on": 2]] [["left": 1]] [["right": 2]] [["first_us": 1000]] [["last_us": 5000]]
+                 [["rejected_outside": 1]])
+  string(FIND "${out}" "${expected}" at)
+  if(at EQUAL -1)
+    message(FATAL_ERROR "event_info --json output lacks ${expected}")
+  endif()
+endforeach()
+execute_process(COMMAND "${EVENT_INFO}" "${WORK_DIR}/missing.aedat4" RESULT_VARIABLE rc OUTPUT_VARIABLE out)
+if(NOT rc EQUAL 1 OR NOT out MATCHES "missing.aedat4: cannot open")
+  message(FATAL_ERROR "a missing file gave exit status ${rc} and: ${out}")
+endif()
