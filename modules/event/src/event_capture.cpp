@@ -73,6 +73,8 @@ String detectEventFileFormat(const String& path)
         return "AEDAT3";
     if (hasPrefix(head, "#!AER-DAT4"))
         return "AEDAT4";
+    if (hasPrefix(head, "#ROSBAG V2.0"))
+        return "ROSBAG1";
     if (looksLikePropheseeDat(head, path))
         return "PROPHESEE_DAT";
     if (looksLikePropheseeRaw(head))
@@ -153,6 +155,8 @@ public:
                 backend = EVENT_CAP_AEDAT3;
             else if (fmt == "AEDAT4")
                 backend = EVENT_CAP_AEDAT4;
+            else if (fmt == "ROSBAG1")
+                backend = EVENT_CAP_ROSBAG1;
             else if (fmt == "TEXT")
                 backend = EVENT_CAP_TEXT;
             else
@@ -172,6 +176,7 @@ public:
         case EVENT_CAP_AEDAT2: return openAedat2Reader(path, opt);
         case EVENT_CAP_AEDAT3: return openAedat3Reader(path, opt);
         case EVENT_CAP_AEDAT4: return openAedat4Reader(path, opt);
+        case EVENT_CAP_ROSBAG1: return openRosBag1Reader(path, opt);
         default:
             CV_Error_(Error::StsBadArg, ("%s: apiPreference %d is not an available EventCapture back-end",
                                          path.c_str(), api));

@@ -53,6 +53,7 @@ Ptr<EventReader> openPropheseeRawReader(const String& path, const ReaderOptions&
 Ptr<EventReader> openAedat2Reader(const String& path, const ReaderOptions& options);
 Ptr<EventReader> openAedat3Reader(const String& path, const ReaderOptions& options);
 Ptr<EventReader> openAedat4Reader(const String& path, const ReaderOptions& options);
+Ptr<EventReader> openRosBag1Reader(const String& path, const ReaderOptions& options);
 /** Merges a left and a right stream in time order (left first on ties), setting Event::camera and adding
 @p rightTimeOffset to the right stream's timestamps. Each side is read in chunks: memory stays bounded. */
 Ptr<EventReader> openStereoMerge(const Ptr<EventReader>& left, const Ptr<EventReader>& right, int64 rightTimeOffset);

@@ -9,6 +9,7 @@
 // counted (EVENT_CAP_PROP_SKIPPED).
 
 #include "event_reader.hpp"
+#include "evt3_decoder.hpp"
 #include "file_input.hpp"
 
 namespace cv {
@@ -70,7 +71,7 @@ public:
     String name() const CV_OVERRIDE { return version_ == 3 ? "PROPHESEE_EVT3" : "PROPHESEE_EVT2"; }
     Size sensorSize() const CV_OVERRIDE { return size_; }
     double progress() const CV_OVERRIDE { return in_.progress(); }
-    int64 skippedEvents() const CV_OVERRIDE { return skipped_; }
+    int64 skippedEvents() const CV_OVERRIDE { return skipped_ + evt3_.skipped(); }
 
     bool next(std::vector<Event>& out) CV_OVERRIDE
     {
@@ -83,7 +84,7 @@ public:
             if (version_ == 2)
                 decodeEvt2(reinterpret_cast<const uint32_t*>(buffer_), got / 4, out);
             else
-                decodeEvt3(reinterpret_cast<const uint16_t*>(buffer_), got / 2, out);
+                evt3_.decode(reinterpret_cast<const uint16_t*>(buffer_), got / 2, out);
         }
         return true;
     }
@@ -114,69 +115,16 @@ private:
         }
     }
 
-    void emitEvt3(int x, int p, std::vector<Event>& out)
-    {
-        if (!haveTimeHigh_)
-        {
-            skipped_++;
-            return;
-        }
-        out.push_back(Event(timeBase_ + timeLow_, x, y_, p));
-    }
-
-    void decodeEvt3(const uint16_t* w, size_t n, std::vector<Event>& out)
-    {
-        for (size_t i = 0; i < n; i++)
-        {
-            const uint16_t word = w[i];
-            switch (word >> 12)
-            {
-            case 0x0: y_ = word & 0x7FF; break;                                  // EVT_ADDR_Y
-            case 0x2: emitEvt3(word & 0x7FF, (word >> 11) & 1, out); break;     // EVT_ADDR_X
-            case 0x3: baseX_ = word & 0x7FF; vectorPolarity_ = (word >> 11) & 1; break;  // VECT_BASE_X
-            case 0x4:                                                           // VECT_12
-            case 0x5:                                                           // VECT_8
-            {
-                const int bits = (word >> 12) == 0x4 ? 12 : 8;
-                const uint32_t mask = word & ((1u << bits) - 1);
-                for (int b = 0; b < bits; b++)
-                    if (mask & (1u << b))
-                        emitEvt3(baseX_ + b, vectorPolarity_, out);
-                baseX_ += bits;
-                break;
-            }
-            case 0x6: timeLow_ = word & 0xFFF; break;                           // EVT_TIME_LOW
-            case 0x8:                                                           // EVT_TIME_HIGH
-            {
-                const int high = word & 0xFFF;
-                // 24-bit time base: a TIME_HIGH far below the previous one is a loop (OpenEB's rule); a
-                // TIME_LOW decrease alone is not.
-                if (haveTimeHigh_ && timeHigh12_ >= high + 2048)
-                    loops_++;
-                if (!haveTimeHigh_ || high != timeHigh12_)
-                    timeLow_ = 0;
-                timeHigh12_ = high;
-                haveTimeHigh_ = true;
-                timeBase_ = (loops_ << 24) + ((int64)high << 12);
-                break;
-            }
-            default: break;  // triggers, IMU, others, continued words: not CD events
-            }
-        }
-    }
-
     FileInput in_;
     Size size_;
     int version_ = -1;
     int64 dataStart_ = 0;
     alignas(8) char buffer_[1 << 16];
+    // EVT 2.0 state
     int64 skipped_ = 0;
     bool haveTimeHigh_ = false;
-    // EVT 2.0
     int64 timeHigh_ = 0;
-    // EVT 3.0
-    int y_ = 0, baseX_ = 0, vectorPolarity_ = 0, timeHigh12_ = 0;
-    int64 timeLow_ = 0, timeBase_ = 0, loops_ = 0;
+    Evt3Decoder evt3_;
 };
 
 }  // namespace

@@ -22,7 +22,8 @@ enum EventCaptureAPIs
     EVENT_CAP_PROPHESEE_RAW = 3, //!< Prophesee .raw, EVT 2.0 and EVT 3.0 encodings
     EVENT_CAP_AEDAT2 = 4,        //!< jAER AEDAT 1.0 / 2.0 (DVS128, DAVIS240/346/640 address layouts)
     EVENT_CAP_AEDAT3 = 5,        //!< cAER / libcaer AEDAT 3.1 (polarity packets)
-    EVENT_CAP_AEDAT4 = 6         //!< DV AEDAT 4.0 (LZ4 / ZSTD packets; two event streams = stereo)
+    EVENT_CAP_AEDAT4 = 6,        //!< DV AEDAT 4.0 (LZ4 / ZSTD packets; two event streams = stereo)
+    EVENT_CAP_ROSBAG1 = 7        //!< ROS1 bag v2.0, dvs_msgs/EventArray or event_camera_msgs/EventPacket (evt3, libcaer); two event topics = stereo
 };
 
 /** @brief Properties of EventCapture (get / set; those marked "before open" are read by open()). */
