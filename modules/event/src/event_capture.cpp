@@ -64,6 +64,8 @@ bool looksLikeText(const std::string& head)
 
 String detectEventFileFormat(const String& path)
 {
+    if (isRosBag2(path))
+        return "ROSBAG2";
     const std::string head = readFilePrefix(path, 4096);
     if (head.empty())
         return String();
@@ -157,6 +159,8 @@ public:
                 backend = EVENT_CAP_AEDAT4;
             else if (fmt == "ROSBAG1")
                 backend = EVENT_CAP_ROSBAG1;
+            else if (fmt == "ROSBAG2")
+                backend = EVENT_CAP_ROSBAG2;
             else if (fmt == "TEXT")
                 backend = EVENT_CAP_TEXT;
             else
@@ -177,6 +181,7 @@ public:
         case EVENT_CAP_AEDAT3: return openAedat3Reader(path, opt);
         case EVENT_CAP_AEDAT4: return openAedat4Reader(path, opt);
         case EVENT_CAP_ROSBAG1: return openRosBag1Reader(path, opt);
+        case EVENT_CAP_ROSBAG2: return openRosBag2Reader(path, opt);
         default:
             CV_Error_(Error::StsBadArg, ("%s: apiPreference %d is not an available EventCapture back-end",
                                          path.c_str(), api));

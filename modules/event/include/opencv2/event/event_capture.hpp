@@ -23,7 +23,8 @@ enum EventCaptureAPIs
     EVENT_CAP_AEDAT2 = 4,        //!< jAER AEDAT 1.0 / 2.0 (DVS128, DAVIS240/346/640 address layouts)
     EVENT_CAP_AEDAT3 = 5,        //!< cAER / libcaer AEDAT 3.1 (polarity packets)
     EVENT_CAP_AEDAT4 = 6,        //!< DV AEDAT 4.0 (LZ4 / ZSTD packets; two event streams = stereo)
-    EVENT_CAP_ROSBAG1 = 7        //!< ROS1 bag v2.0, dvs_msgs/EventArray or event_camera_msgs/EventPacket (evt3, libcaer); two event topics = stereo
+    EVENT_CAP_ROSBAG1 = 7,       //!< ROS1 bag v2.0, dvs_msgs/EventArray or event_camera_msgs/EventPacket (evt3, libcaer); two event topics = stereo
+    EVENT_CAP_ROSBAG2 = 8        //!< ROS2 bag (sqlite3 storage; folder or .db3), event_camera_msgs/msg/EventPacket (evt3, libcaer)
 };
 
 /** @brief Properties of EventCapture (get / set; those marked "before open" are read by open()). */
