@@ -77,6 +77,8 @@ String detectEventFileFormat(const String& path)
         return "AEDAT4";
     if (hasPrefix(head, "#ROSBAG V2.0"))
         return "ROSBAG1";
+    if (hasPrefix(head, "\x89HDF\r\n\x1a\n"))
+        return "HDF5";
     if (looksLikePropheseeDat(head, path))
         return "PROPHESEE_DAT";
     if (looksLikePropheseeRaw(head))
@@ -161,6 +163,8 @@ public:
                 backend = EVENT_CAP_ROSBAG1;
             else if (fmt == "ROSBAG2")
                 backend = EVENT_CAP_ROSBAG2;
+            else if (fmt == "HDF5")
+                backend = EVENT_CAP_HDF5;
             else if (fmt == "TEXT")
                 backend = EVENT_CAP_TEXT;
             else
@@ -182,6 +186,7 @@ public:
         case EVENT_CAP_AEDAT4: return openAedat4Reader(path, opt);
         case EVENT_CAP_ROSBAG1: return openRosBag1Reader(path, opt);
         case EVENT_CAP_ROSBAG2: return openRosBag2Reader(path, opt);
+        case EVENT_CAP_HDF5: return openHdf5Reader(path, opt);
         default:
             CV_Error_(Error::StsBadArg, ("%s: apiPreference %d is not an available EventCapture back-end",
                                          path.c_str(), api));

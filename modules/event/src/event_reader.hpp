@@ -55,6 +55,7 @@ Ptr<EventReader> openAedat3Reader(const String& path, const ReaderOptions& optio
 Ptr<EventReader> openAedat4Reader(const String& path, const ReaderOptions& options);
 Ptr<EventReader> openRosBag1Reader(const String& path, const ReaderOptions& options);
 Ptr<EventReader> openRosBag2Reader(const String& path, const ReaderOptions& options);
+Ptr<EventReader> openHdf5Reader(const String& path, const ReaderOptions& options);
 /** A ROS2 bag: a folder with metadata.yaml, or an sqlite3 database file. */
 bool isRosBag2(const String& path);
 /** Merges a left and a right stream in time order (left first on ties), setting Event::camera and adding
