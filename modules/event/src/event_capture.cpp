@@ -193,10 +193,19 @@ public:
         }
     }
 
+    // How the source was opened, to reopen it for a backward seek.
+    String openedPath, openedRight;
+    int openedApi = EVENT_CAP_ANY;
+    bool openedStereoPair = false;
+
     void open(const String& path, int api)
     {
         close();
         lastError.clear();
+        openedPath = path;
+        openedRight.clear();
+        openedApi = api;
+        openedStereoPair = false;
         Ptr<EventReader> r = makeReader(path, api, options);
         if (r->isStereo())
         {
@@ -213,6 +222,10 @@ public:
     {
         close();
         lastError.clear();
+        openedPath = leftPath;
+        openedRight = rightPath;
+        openedApi = api;
+        openedStereoPair = true;
         Ptr<EventReader> l = makeReader(leftPath, api, options), r = makeReader(rightPath, api, options);
         if (l->isStereo() || r->isStereo())
             CV_Error_(Error::StsBadArg, ("openStereo(%s, %s): each file must hold one camera",
@@ -345,6 +358,24 @@ public:
         windowStart = end;
         grabbed = true;  // an empty window is still a window
         return true;
+    }
+
+    // Seeks by decoding: events before @p target are skipped (not delivered, not counted); a target before
+    // the current position reopens the source first. Every format supports it; the cost is the decoding.
+    void seek(int64 target)
+    {
+        const int64 position = windowStarted ? windowStart : (lastDelivered >= 0 ? lastDelivered + 1 : INT64_MIN);
+        if (target < position)
+        {
+            if (openedStereoPair)
+                openStereo(openedPath, openedRight, openedApi);
+            else
+                open(openedPath, openedApi);
+        }
+        while (fill() && pending[pendingPos].t < target)
+            pendingPos++;
+        windowStart = target;
+        windowStarted = true;
     }
 
     void retrieve(OutputArray events)
@@ -529,6 +560,21 @@ bool EventCapture::set(int propId, double value)
         return true;
     case EVENT_CAP_PROP_EXCEPTION_MODE: s.exceptionMode = v != 0; return true;
     case EVENT_CAP_PROP_RIGHT_TIME_OFFSET_US: s.rightTimeOffset = (int64)std::llround(value); return true;
+    case EVENT_CAP_PROP_POS_US:
+        if (!s.reader)
+            return false;
+        try
+        {
+            s.seek((int64)std::llround(value));
+        }
+        catch (const cv::Exception& e)
+        {
+            s.lastError = e.err;
+            if (s.exceptionMode)
+                throw;
+            return false;
+        }
+        return true;
     case EVENT_CAP_PROP_TEXT_TIME_UNIT:
         if (v < EVENT_TIME_UNIT_AUTO || v > EVENT_TIME_UNIT_NANOSECONDS) return false;
         s.options.textTimeUnit = v;

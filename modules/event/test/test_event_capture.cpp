@@ -206,6 +206,32 @@ TEST(Event_Capture_Text, two_files_open_as_a_stereo_pair)
     std::remove(r.c_str());
 }
 
+TEST(Event_Capture_Text, seek_by_time_forward_and_backward)
+{
+    std::string content;
+    for (int k = 0; k < 100; k++)
+        content += std::to_string(k * 1000) + " " + std::to_string(k % 50) + " 1 1\n";  // one event per ms
+    const std::string path = writeTempFile(content, ".txt");
+    EventCapture cap(path);
+    cap.set(EVENT_CAP_PROP_WINDOW_US, 10000);
+    std::vector<Event> w;
+    ASSERT_TRUE(cap.read(w));
+    ASSERT_EQ(10u, w.size());
+    ASSERT_TRUE(cap.set(EVENT_CAP_PROP_POS_US, 55000));   // forward
+    ASSERT_TRUE(cap.read(w));
+    ASSERT_EQ(10u, w.size());
+    EXPECT_EQ(55000, w.front().t);
+    EXPECT_EQ(64000, w.back().t);
+    ASSERT_TRUE(cap.set(EVENT_CAP_PROP_POS_US, 20500));   // backward: reopens
+    ASSERT_TRUE(cap.read(w));
+    ASSERT_EQ(10u, w.size());
+    EXPECT_EQ(21000, w.front().t);
+    EXPECT_EQ(30000, w.back().t);
+    ASSERT_TRUE(cap.set(EVENT_CAP_PROP_POS_US, 1e9));     // past the end
+    EXPECT_FALSE(cap.read(w));
+    std::remove(path.c_str());
+}
+
 // ---- Prophesee .dat ---------------------------------------------------------------------------------
 
 std::string datRecord(uint32_t t, int x, int y, int p)

@@ -35,7 +35,7 @@ enum EventCaptureProperties
     EVENT_CAP_PROP_SENSOR_HEIGHT = 2,      //!< sensor height [px]; 0 when unknown (settable before open)
     EVENT_CAP_PROP_WINDOW_US = 3,          //!< read() delivers the events of consecutive windows of this length [us] (default 10000)
     EVENT_CAP_PROP_BATCH_EVENTS = 4,       //!< when > 0, read() delivers batches of this many events instead of time windows
-    EVENT_CAP_PROP_POS_US = 5,             //!< start of the next time window, or the timestamp of the last delivered event [us]
+    EVENT_CAP_PROP_POS_US = 5,             //!< start of the next time window, or the timestamp of the last delivered event [us]; set() seeks (any format: by decoding, reopening for a backward seek, which restarts the counters)
     EVENT_CAP_PROP_EVENTS_DELIVERED = 6,   //!< events delivered by read()/retrieve() so far
     EVENT_CAP_PROP_DURATION_US = 7,        //!< duration of the recording when the format tells it without reading it all, else -1
     EVENT_CAP_PROP_FIRST_TIMESTAMP_US = 8, //!< timestamp of the first event (after open), or -1 when the source is empty
