@@ -1,0 +1,184 @@
+// event_player: plays any supported recording as video, as time surfaces or as event-count frames.
+//
+//   event_player FILE [--mode surface|frames] [--window-ms 33] [--tau-ms 30] [--output DIR] [--video FILE.avi]
+//                     [--show] [--start-ms T] [--max-frames N] [--sensor WxH|NAME] [--one-based]
+//
+// Frames go to DIR/frame_NNNNN.png (default), to an MJPG video with --video, and/or to a window with --show.
+// Stereo recordings are shown left | right. A progress bar runs on stderr.
+
+#include <opencv2/event.hpp>
+#include <opencv2/highgui.hpp>
+#include <opencv2/imgcodecs.hpp>
+#include <opencv2/imgproc.hpp>
+#include <opencv2/videoio.hpp>
+
+#include <cstdio>
+#include <iostream>
+#include <sys/stat.h>
+
+using namespace cv;
+using namespace cv::event;
+
+namespace {
+
+struct Options
+{
+    std::string input, output = "player_output", video, mode = "surface";
+    double windowMs = 33, tauMs = 30, startMs = -1;
+    int maxFrames = -1;
+    bool show = false, oneBased = false;
+    Size sensor;
+};
+
+// ON red, OFF blue: recent events bright (time surface) or one level per event (count frame).
+Mat render(const EventSurface& s, int64 t, const Options& o)
+{
+    Mat on, off;
+    if (o.mode == "frames")
+    {
+        Mat c;
+        s.renderEventCount(c, POLARITY_ON);
+        c.convertTo(on, CV_8U, 64);
+        s.renderEventCount(c, POLARITY_OFF);
+        c.convertTo(off, CV_8U, 64);
+    }
+    else
+    {
+        s.renderTimeSurface(t, o.tauMs * 1000, on, CV_8U, POLARITY_ON);
+        s.renderTimeSurface(t, o.tauMs * 1000, off, CV_8U, POLARITY_OFF);
+    }
+    Mat bgr;
+    merge(std::vector<Mat>{ off, Mat::zeros(on.size(), CV_8U), on }, bgr);
+    return bgr;
+}
+
+void progressBar(double fraction, int64 frames)
+{
+    const int width = 40;
+    const int filled = fraction < 0 ? 0 : (int)std::lround(std::min(1.0, fraction) * width);
+    std::cerr << "\r[" << std::string(filled, '#') << std::string(width - filled, '.') << "] ";
+    if (fraction >= 0)
+        std::cerr << (int)std::lround(100 * std::min(1.0, fraction)) << "% ";
+    std::cerr << frames << " frames" << std::flush;
+}
+
+bool parse(int argc, char** argv, Options& o)
+{
+    for (int i = 1; i < argc; i++)
+    {
+        const std::string a = argv[i];
+        auto value = [&]() -> std::string {
+            if (i + 1 >= argc)
+                throw std::runtime_error("missing value after " + a);
+            return argv[++i];
+        };
+        if (a == "--mode") o.mode = value();
+        else if (a == "--window-ms") o.windowMs = std::stod(value());
+        else if (a == "--tau-ms") o.tauMs = std::stod(value());
+        else if (a == "--start-ms") o.startMs = std::stod(value());
+        else if (a == "--output") o.output = value();
+        else if (a == "--video") o.video = value();
+        else if (a == "--max-frames") o.maxFrames = std::stoi(value());
+        else if (a == "--show") o.show = true;
+        else if (a == "--one-based") o.oneBased = true;
+        else if (a == "--sensor")
+        {
+            const std::string v = value();
+            const int model = findSensorModel(v);
+            if (model >= 0)
+                o.sensor = getSensorSize(model);
+            else if (std::sscanf(v.c_str(), "%dx%d", &o.sensor.width, &o.sensor.height) != 2)
+                throw std::runtime_error("--sensor takes WxH or a sensor name, got " + v);
+        }
+        else if (a == "-h" || a == "--help")
+            return false;
+        else if (!a.empty() && a[0] == '-')
+            throw std::runtime_error("unknown option " + a);
+        else
+            o.input = a;
+    }
+    if (o.input.empty())
+        return false;
+    if (o.mode != "surface" && o.mode != "frames")
+        throw std::runtime_error("--mode is surface or frames");
+    return true;
+}
+
+}  // namespace
+
+int main(int argc, char** argv)
+{
+    Options o;
+    try
+    {
+        if (!parse(argc, argv, o))
+        {
+            std::cerr << "usage: event_player FILE [--mode surface|frames] [--window-ms MS] [--tau-ms MS] [--output DIR]\n"
+                         "       [--video FILE.avi] [--show] [--start-ms T] [--max-frames N] [--sensor WxH|NAME] [--one-based]\n";
+            return argc > 1 ? 2 : 0;
+        }
+        EventCapture cap;
+        cap.set(EVENT_CAP_PROP_SENSOR_WIDTH, o.sensor.width);
+        cap.set(EVENT_CAP_PROP_SENSOR_HEIGHT, o.sensor.height);
+        cap.set(EVENT_CAP_PROP_TEXT_ONE_BASED, o.oneBased);
+        cap.set(EVENT_CAP_PROP_WINDOW_US, o.windowMs * 1000);
+        cap.open(o.input);
+        const Size size = cap.getSensorSize();
+        if (size.empty())
+            throw std::runtime_error(o.input + ": the format does not give the sensor size; pass --sensor WxH");
+        if (o.startMs >= 0)
+            cap.set(EVENT_CAP_PROP_POS_US, cap.get(EVENT_CAP_PROP_FIRST_TIMESTAMP_US) + o.startMs * 1000);
+        const bool stereo = cap.get(EVENT_CAP_PROP_STEREO) != 0;
+        const bool writePngs = o.video.empty() && !o.show;
+        if (writePngs)
+            ::mkdir(o.output.c_str(), 0755);
+
+        Ptr<EventSurface> surface[2] = { EventSurface::create(size), EventSurface::create(size) };
+        VideoWriter video;
+        std::vector<Event> packet;
+        int64 frames = 0;
+        while ((o.maxFrames < 0 || frames < o.maxFrames) && cap.read(packet))
+        {
+            surface[0]->clearCounts();
+            surface[1]->clearCounts();
+            for (const Event& e : packet)
+                surface[stereo ? e.camera : 0]->update(e);
+            const int64 now = (int64)cap.get(EVENT_CAP_PROP_POS_US);
+            Mat frame = render(*surface[0], now, o);
+            if (stereo)
+                hconcat(frame, render(*surface[1], now, o), frame);
+            if (!o.video.empty())
+            {
+                if (!video.isOpened() &&
+                    !video.open(o.video, VideoWriter::fourcc('M', 'J', 'P', 'G'), 1000.0 / o.windowMs, frame.size()))
+                    throw std::runtime_error(o.video + ": cannot open a video writer (MJPG)");
+                video.write(frame);
+            }
+            if (o.show)
+            {
+                imshow("event_player", frame);
+                if (waitKey(std::max(1, (int)o.windowMs)) == 27)
+                    break;
+            }
+            if (writePngs)
+            {
+                char name[64];
+                std::snprintf(name, sizeof(name), "/frame_%05lld.png", (long long)frames);
+                imwrite(o.output + name, frame);
+            }
+            frames++;
+            if (frames % 10 == 0)
+                progressBar(cap.get(EVENT_CAP_PROP_PROGRESS), frames);
+        }
+        progressBar(cap.get(EVENT_CAP_PROP_PROGRESS), frames);
+        std::cerr << "\n"
+                  << cap.get(EVENT_CAP_PROP_EVENTS_DELIVERED) << " events, " << frames << " frames of " << o.windowMs
+                  << " ms" << (writePngs ? " in " + o.output : std::string()) << "\n";
+        return 0;
+    }
+    catch (const std::exception& e)
+    {
+        std::cerr << "\nevent_player: " << e.what() << "\n";
+        return 1;
+    }
+}
