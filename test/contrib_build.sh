@@ -30,6 +30,13 @@ if [ -f "$build/CMakeCache.txt" ] && { ! grep -qx "CMAKE_HOME_DIRECTORY:INTERNAL
   rm -rf "$build"; mkdir -p "$build"
 fi
 
+# Python bindings (cv2 with cv2.event) when Debian's python3 with numpy is there: proves WRAP python works.
+python=(-DBUILD_opencv_python3=OFF)
+if /usr/bin/python3 -c "import numpy, os, sysconfig; assert os.path.exists(os.path.join(sysconfig.get_paths()['include'], 'Python.h'))" 2>/dev/null; then
+  python=(-DBUILD_opencv_python3=ON -DPYTHON3_EXECUTABLE=/usr/bin/python3
+          -DPYTHON3_NUMPY_INCLUDE_DIRS="$(/usr/bin/python3 -c 'import numpy; print(numpy.get_include())')")
+fi
+
 off=()
 for w in OPENJPEG JASPER QUIRC IPP ITT ADE PROTOBUF GTK QT FFMPEG GSTREAMER V4L 1394 OPENCL VA VA_INTEL \
          TIFF WEBP OPENEXR CAROTENE LAPACK TBB OPENMP VTK CUDA OPENGL GDAL GPHOTO2 ONNX VULKAN IMGCODEC_HDR \
@@ -45,19 +52,25 @@ cmake -S "$src" -B "$build" "${generator[@]}" "${launcher[@]}" "${off[@]}" \
   -DBUILD_TESTS=ON -DBUILD_PERF_TESTS=ON \
   -DOPENCV_BUILD_TEST_MODULES_LIST=event -DOPENCV_BUILD_PERF_TEST_MODULES_LIST=event \
   -DBUILD_EXAMPLES=OFF -DBUILD_opencv_apps=OFF -DBUILD_DOCS=OFF -DBUILD_JAVA=OFF \
-  -DBUILD_opencv_python2=OFF -DBUILD_opencv_python3=OFF \
+  -DBUILD_opencv_python2=OFF "${python[@]}" \
   -DBUILD_ZLIB=OFF -DBUILD_PNG=OFF -DBUILD_JPEG=OFF -DWITH_PNG=ON -DWITH_JPEG=ON -DWITH_EIGEN=ON \
   -DCPU_DISPATCH= -DOPENCV_GENERATE_PKGCONFIG=OFF -DENABLE_PRECOMPILED_HEADERS=OFF \
   > "$build/configure.log" 2>&1 || { tail -50 "$build/configure.log"; exit 1; }
 grep -E "opencv_event|To be built" "$build/configure.log" || true
 
 echo "== contrib_build: building (log: $build/build.log)"
-cmake --build "$build" --target opencv_test_event opencv_perf_event > "$build/build.log" 2>&1 \
+targets=(opencv_test_event opencv_perf_event)
+if [ "${python[0]}" = -DBUILD_opencv_python3=ON ]; then targets+=(opencv_python3); fi
+cmake --build "$build" --target "${targets[@]}" > "$build/build.log" 2>&1 \
   || { tail -80 "$build/build.log"; exit 1; }
 if command -v ccache >/dev/null; then ccache -s | grep -Ei "hit|miss" | head -4 || true; fi
 
 echo "== contrib_build: opencv_test_event"
 "$build/bin/opencv_test_event"
+if [ "${python[0]}" = -DBUILD_opencv_python3=ON ]; then
+  echo "== contrib_build: Python bindings (cv2.event)"
+  PYTHONPATH="$(dirname "$(find "$build/lib" -name 'cv2*.so' | head -1)")" /usr/bin/python3 "$here/python_bindings.py"
+fi
 echo "== contrib_build: opencv_perf_event (one sample each: proves the perf tests run, not a timing)"
 "$build/bin/opencv_perf_event" --gtest_list_tests | head -20
 "$build/bin/opencv_perf_event" --perf_min_samples=1 --perf_force_samples=1 --perf_time_limit=1

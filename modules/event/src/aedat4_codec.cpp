@@ -278,6 +278,29 @@ const uchar* FlatTable::vectorField(int field, size_t elementSize, size_t& count
     return buf_ + v + 4;
 }
 
+std::vector<FlatTable> FlatTable::tableVectorField(int field) const
+{
+    size_t count = 0;
+    const uchar* first = vectorField(field, 4, count);
+    std::vector<FlatTable> tables;
+    tables.reserve(count);
+    for (size_t i = 0; i < count; i++)
+    {
+        const size_t at = (size_t)(first - buf_) + 4 * i;
+        tables.push_back(FlatTable(buf_, size_, at + u32(at), path_, offset_));
+    }
+    return tables;
+}
+
+const uchar* FlatTable::structField(int field, size_t size) const
+{
+    const uint16_t off = fieldOffset(field);
+    if (!off)
+        return nullptr;
+    check(pos_ + off, size, "struct field");
+    return buf_ + pos_ + off;
+}
+
 // ---- info node ----------------------------------------------------------------------------------------
 
 namespace {

@@ -53,6 +53,10 @@ public:
     std::string stringField(int field) const;
     /** A vector of structs of @p elementSize bytes: its element count and the address of element 0. */
     const uchar* vectorField(int field, size_t elementSize, size_t& count) const;
+    /** A vector of tables. */
+    std::vector<FlatTable> tableVectorField(int field) const;
+    /** An inline struct field of @p size bytes, or nullptr when absent. */
+    const uchar* structField(int field, size_t size) const;
 
 private:
     FlatTable(const uchar* buf, size_t size, size_t pos, const String& path, int64 offset);

@@ -56,9 +56,12 @@ public:
         size_ = streams[pick].size;
         if (!options.sensorSize.empty())
             size_ = options.sensorSize;
+        if (dataTable_ >= 0)
+            readDataTable();
     }
 
     String name() const CV_OVERRIDE { return "AEDAT4"; }
+    int64 durationUs() const CV_OVERRIDE { return duration_; }
     Size sensorSize() const CV_OVERRIDE { return size_; }
     double progress() const CV_OVERRIDE { return in_.progress(); }
     bool isStereo() const CV_OVERRIDE { return stereo_; }
@@ -93,6 +96,48 @@ public:
     }
 
 private:
+    // The optional FileDataTable (per packet: stream, byte offset, element count, first / last timestamp) gives
+    // the recording's duration without decoding it. It is a convenience: a damaged table leaves the duration
+    // unknown but does not stop the events from being read.
+    void readDataTable()
+    {
+        const int64 back = in_.offset();
+        try
+        {
+            if (in_.size() < 0 || dataTable_ > in_.size() || in_.size() - dataTable_ > (int64)kMaxPacketBytes)
+                return;
+            in_.seek(dataTable_);
+            std::vector<uchar> raw((size_t)(in_.size() - dataTable_));
+            in_.readExact(raw.data(), raw.size(), "the data table");
+            const std::vector<uchar> fb = aedat4Decompress(compression_, raw.data(), raw.size(), in_.path(),
+                                                           dataTable_, kMaxPacketBytes);
+            uint32_t prefix = 0;
+            if (fb.size() >= 12)
+                std::memcpy(&prefix, fb.data(), 4);
+            if (fb.size() < 12 || prefix > fb.size() - 4 || std::memcmp(fb.data() + 8, "FTAB", 4) != 0)
+                throw std::runtime_error("not a FileDataTable");
+            int64 first = INT64_MAX, last = INT64_MIN;
+            for (const FlatTable& entry : FlatTable::root(fb.data() + 4, prefix, in_.path(), dataTable_).tableVectorField(0))
+            {
+                const uchar* info = entry.structField(1, 8);  // PacketHeader {int32 stream, int32 size}
+                int32_t streamId = -1;
+                if (info)
+                    std::memcpy(&streamId, info, 4);
+                if (streamId != stream_ || entry.int64Field(2, 0) <= 0)
+                    continue;
+                first = std::min(first, entry.int64Field(3, INT64_MAX));
+                last = std::max(last, entry.int64Field(4, INT64_MIN));
+            }
+            if (first <= last)
+                duration_ = last - first;
+        }
+        catch (const std::exception&)
+        {
+            duration_ = -1;
+        }
+        in_.seek(back);
+    }
+
     size_t decode(int64 at, std::vector<Event>& out)
     {
         const std::vector<uchar> fb = aedat4Decompress(compression_, packet_.data(), packet_.size(), in_.path(),
@@ -126,6 +171,7 @@ private:
     int64 dataTable_ = -1;
     int stream_ = 0;
     bool stereo_ = false;
+    int64 duration_ = -1;
     std::vector<uchar> packet_;
 };
 

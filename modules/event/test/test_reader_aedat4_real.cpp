@@ -28,6 +28,8 @@ TEST(Event_Capture_Real, aedat4_samples_counts_sizes_and_durations)
         EXPECT_EQ("AEDAT4", cap.getBackendName()) << f.file;
         EXPECT_EQ(f.size, cap.getSensorSize()) << f.file;
         EXPECT_EQ(0.0, cap.get(EVENT_CAP_PROP_STEREO)) << f.file;
+        // Both files end with a FileDataTable: the duration is known before reading.
+        EXPECT_NEAR(f.durationUs, cap.get(EVENT_CAP_PROP_DURATION_US), 0.01e6) << f.file;
         cap.set(EVENT_CAP_PROP_BATCH_EVENTS, 50000);
         std::vector<Event> packet;
         size_t n = 0;

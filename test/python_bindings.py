@@ -1,0 +1,53 @@
+"""Smoke test of the Python bindings that the contrib build generates for cv2.event (run by contrib_build.sh).
+
+Every check compares against values fixed here, so a binding that drops or mangles a field fails.
+"""
+import os
+import tempfile
+
+import cv2
+import numpy as np
+
+ev = cv2.event
+
+# Columns -> packet -> columns: an N x 1 CV_8UC(16) Mat is an (N, 1, 16) uint8 array in numpy.
+t = np.array([1000.0, 1500.0, 2500.0])
+x = np.array([1, 7, 3], np.int32)
+y = np.array([2, 5, 0], np.int32)
+p = np.array([1, -1, 1], np.int32)
+packet = ev.packEvents(t, x, y, p)
+assert packet.shape == (3, 1, 16) and packet.dtype == np.uint8, packet.shape
+record = np.dtype([("t", "<i8"), ("x", "<i2"), ("y", "<i2"), ("p", "u1"), ("camera", "u1"), ("reserved", "<u2")])
+view = packet.reshape(3, 16).copy().view(record).ravel()
+assert list(view["t"]) == [1000, 1500, 2500] and list(view["x"]) == [1, 7, 3] and list(view["p"]) == [1, 0, 1]
+t2, x2, y2, p2, cam = ev.unpackEvents(packet)
+assert np.array_equal(t2.ravel(), t) and np.array_equal(y2.ravel(), y) and list(p2.ravel()) == [1, 0, 1]
+
+# EventSurface: the time surface at t = 2500 us with tau = 1000 us is exp(-(2500 - T) / 1000).
+surface = ev.EventSurface_create((8, 6))
+assert tuple(surface.getSensorSize()) == (8, 6)
+surface.update(packet)
+ts = surface.renderTimeSurface(2500, 1000.0, ddepth=cv2.CV_32F)
+assert ts.shape == (6, 8)
+assert abs(ts[2, 1] - np.exp(-1.5)) < 1e-6 and abs(ts[0, 3] - 1.0) < 1e-6 and ts[5, 7] == 0
+assert surface.getEventCount() == 3
+
+# EventWriter -> EventCapture through a file.
+path = os.path.join(tempfile.mkdtemp(), "events.aedat4")
+writer = ev.EventWriter(path, (8, 6))
+writer.write(packet)
+writer.release()
+assert ev.detectEventFileFormat(path) == "AEDAT4"
+cap = ev.EventCapture(path)
+assert cap.isOpened() and cap.getBackendName() == "AEDAT4"
+cap.set(ev.EVENT_CAP_PROP_BATCH_EVENTS, 100)
+ok, back = cap.read()
+assert ok and np.array_equal(back, packet)
+ok, back = cap.read()
+assert not ok
+
+# Stereo merge with camera ids.
+merged = ev.mergeStereoEvents(packet, packet)
+tm, xm, ym, pm, cm = ev.unpackEvents(merged)
+assert list(cm.ravel()) == [0, 1, 0, 1, 0, 1]
+print("python bindings: cv2.event OK")
