@@ -30,11 +30,21 @@ if [ -f "$build/CMakeCache.txt" ] && { ! grep -qx "CMAKE_HOME_DIRECTORY:INTERNAL
   rm -rf "$build"; mkdir -p "$build"
 fi
 
+modules=core,imgproc,imgcodecs,videoio,highgui,flann,features2d,calib3d,ts,event
 # Python bindings (cv2 with cv2.event) when Debian's python3 with numpy is there: proves WRAP python works.
 python=(-DBUILD_opencv_python3=OFF)
 if /usr/bin/python3 -c "import numpy, os, sysconfig; assert os.path.exists(os.path.join(sysconfig.get_paths()['include'], 'Python.h'))" 2>/dev/null; then
+  py() { /usr/bin/python3 -c "$1"; }
   python=(-DBUILD_opencv_python3=ON -DPYTHON3_EXECUTABLE=/usr/bin/python3
-          -DPYTHON3_NUMPY_INCLUDE_DIRS="$(/usr/bin/python3 -c 'import numpy; print(numpy.get_include())')")
+          -DPYTHON3_INCLUDE_DIR="$(py 'import sysconfig; print(sysconfig.get_paths()["include"])')"
+          -DPYTHON3_LIBRARY="$(py 'import sysconfig, os; print(os.path.join(sysconfig.get_config_var("LIBDIR"), sysconfig.get_config_var("LDLIBRARY")))')"
+          -DPYTHON3_NUMPY_INCLUDE_DIRS="$(py 'import numpy; print(numpy.get_include())')")
+  modules="$modules,python3,python_bindings_generator"
+  # OpenCV caches what it found of Python: drop a stale result (another interpreter) before configuring.
+  version=$(py 'import platform; print(platform.python_version())')
+  if [ -f "$build/CMakeCache.txt" ] && ! grep -qx "PYTHON3_VERSION_STRING:INTERNAL=$version" "$build/CMakeCache.txt"; then
+    python=(-U "PYTHON3*" -U "OPENCV_PYTHON3*" "${python[@]}")  # -U first: it would also drop the -D given before it
+  fi
 fi
 
 off=()
@@ -48,7 +58,7 @@ echo "== contrib_build: configuring OpenCV $(basename "$src") with $repo/modules
 cmake -S "$src" -B "$build" "${generator[@]}" "${launcher[@]}" "${off[@]}" \
   -DCMAKE_BUILD_TYPE=Release \
   -DOPENCV_EXTRA_MODULES_PATH="$repo/modules" \
-  -DBUILD_LIST=core,imgproc,imgcodecs,videoio,highgui,flann,features2d,calib3d,ts,event \
+  -DBUILD_LIST="$modules" \
   -DBUILD_TESTS=ON -DBUILD_PERF_TESTS=ON \
   -DOPENCV_BUILD_TEST_MODULES_LIST=event -DOPENCV_BUILD_PERF_TEST_MODULES_LIST=event \
   -DBUILD_EXAMPLES=OFF -DBUILD_opencv_apps=OFF -DBUILD_DOCS=OFF -DBUILD_JAVA=OFF \
@@ -60,14 +70,14 @@ grep -E "opencv_event|To be built" "$build/configure.log" || true
 
 echo "== contrib_build: building (log: $build/build.log)"
 targets=(opencv_test_event opencv_perf_event)
-if [ "${python[0]}" = -DBUILD_opencv_python3=ON ]; then targets+=(opencv_python3); fi
+if [[ " ${python[*]} " == *" -DBUILD_opencv_python3=ON "* ]]; then targets+=(opencv_python3); fi
 cmake --build "$build" --target "${targets[@]}" > "$build/build.log" 2>&1 \
   || { tail -80 "$build/build.log"; exit 1; }
 if command -v ccache >/dev/null; then ccache -s | grep -Ei "hit|miss" | head -4 || true; fi
 
 echo "== contrib_build: opencv_test_event"
 "$build/bin/opencv_test_event"
-if [ "${python[0]}" = -DBUILD_opencv_python3=ON ]; then
+if [[ " ${python[*]} " == *" -DBUILD_opencv_python3=ON "* ]]; then
   echo "== contrib_build: Python bindings (cv2.event)"
   PYTHONPATH="$(dirname "$(find "$build/lib" -name 'cv2*.so' | head -1)")" /usr/bin/python3 "$here/python_bindings.py"
 fi

@@ -29,7 +29,7 @@ assert tuple(surface.getSensorSize()) == (8, 6)
 surface.update(packet)
 ts = surface.renderTimeSurface(2500, 1000.0, ddepth=cv2.CV_32F)
 assert ts.shape == (6, 8)
-assert abs(ts[2, 1] - np.exp(-1.5)) < 1e-6 and abs(ts[0, 3] - 1.0) < 1e-6 and ts[5, 7] == 0
+assert abs(ts[2, 1] - np.exp(-1.5)) < 1e-6 and abs(ts[0, 3] - 1.0) < 1e-6 and ts[5, 0] == 0 and abs(ts[5, 7] - np.exp(-1.0)) < 1e-6
 assert surface.getEventCount() == 3
 
 # EventWriter -> EventCapture through a file.

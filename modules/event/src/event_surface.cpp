@@ -82,8 +82,9 @@ public:
         return &times_[index(0, y, checkPolarity(polarity, false))];
     }
 
-    void getSurface(int polarity, OutputArray surface, int ddepth, int64 origin) const CV_OVERRIDE
+    void getSurface(int polarity, OutputArray surface, int ddepth, double originUs) const CV_OVERRIDE
     {
+        const int64 origin = (int64)std::llround(originUs);
         CV_CheckType(ddepth, ddepth == CV_64F || ddepth == CV_32S, "EventSurface::getSurface: CV_64F or CV_32S");
         const int p = checkPolarity(polarity, true);
         surface.create(size_, ddepth);
@@ -104,8 +105,9 @@ public:
         }
     }
 
-    void renderTimeSurface(int64 t, double tau, OutputArray dst, int ddepth, int polarity) const CV_OVERRIDE
+    void renderTimeSurface(double tUs, double tau, OutputArray dst, int ddepth, int polarity) const CV_OVERRIDE
     {
+        const int64 t = (int64)std::llround(tUs);
         CV_CheckType(ddepth, ddepth == CV_8U || ddepth == CV_32F, "EventSurface::renderTimeSurface: CV_8U or CV_32F");
         if (!(tau > 0))
             CV_Error_(Error::StsBadArg, ("EventSurface::renderTimeSurface: tau must be > 0 us, got %g", tau));

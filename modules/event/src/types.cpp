@@ -10,6 +10,7 @@
 namespace cv {
 namespace event {
 
+static_assert(EVENT_MAT_TYPE == CV_MAKETYPE(CV_8U, 16), "EVENT_MAT_TYPE is 16 x CV_8U");
 static_assert(sizeof(Event) == 16, "Event must stay a 16-byte record: EVENT_MAT_TYPE depends on it");
 static_assert(offsetof(Event, t) == 0 && offsetof(Event, x) == 8 && offsetof(Event, y) == 10 &&
               offsetof(Event, p) == 12 && offsetof(Event, camera) == 13,
@@ -177,8 +178,9 @@ int findTimeOrderViolation(InputArray events)
     return -1;
 }
 
-void mergeStereoEvents(InputArray left, InputArray right, OutputArray merged, int64 rightTimeOffset)
+void mergeStereoEvents(InputArray left, InputArray right, OutputArray merged, double rightTimeOffsetUs)
 {
+    const int64 rightTimeOffset = (int64)std::llround(rightTimeOffsetUs);
     Mat_<Event> l = getEventMat(left), r = getEventMat(right);
     int bad = findTimeOrderViolation(l);
     if (bad >= 0)

@@ -74,8 +74,10 @@ public:
     @param surface output, sensor-sized; CV_64F microseconds (exact below 2^53 us) with -infinity where no
     event arrived, or CV_32S microseconds relative to @p origin (saturated) with INT_MIN where empty.
     @param ddepth CV_64F or CV_32S.
-    @param origin subtracted from every timestamp (us), e.g. the first timestamp of the recording. */
-    CV_WRAP virtual void getSurface(int polarity, OutputArray surface, int ddepth = CV_64F, int64 origin = 0) const = 0;
+    @param origin subtracted from every timestamp (us), e.g. the first timestamp of the recording.
+    Times cross the API as double microseconds (exact below 2^53 us, 285 years): the Python bindings of
+    OpenCV 4.6 cannot pass int64 arguments. */
+    CV_WRAP virtual void getSurface(int polarity, OutputArray surface, int ddepth = CV_64F, double origin = 0) const = 0;
 
     /** @brief Renders the exponentially decaying time surface at time @p t.
     Value = exp(-(t - T) / tau) for pixels whose last event T is at or before @p t, 0 elsewhere (no event yet,
@@ -85,7 +87,7 @@ public:
     @param dst output, sensor-sized.
     @param ddepth CV_8U or CV_32F.
     @param polarity POLARITY_OFF, POLARITY_ON, or -1 for the latest of both. */
-    CV_WRAP virtual void renderTimeSurface(int64 t, double tau, OutputArray dst, int ddepth = CV_8U,
+    CV_WRAP virtual void renderTimeSurface(double t, double tau, OutputArray dst, int ddepth = CV_8U,
                                            int polarity = -1) const = 0;
 
     /** @brief Renders the event counts accumulated since the last clearCounts() / reset().

@@ -70,7 +70,7 @@ struct Event
 };
 
 /** @brief Mat type of an event packet: one 16-byte Event per element (CV_8UC(16)); packets are N x 1. */
-enum { EVENT_MAT_TYPE = CV_MAKETYPE(CV_8U, 16) };
+enum { EVENT_MAT_TYPE = CV_8UC(16) };
 
 /** @brief Known sensors, for their pixel array size. */
 enum SensorModel
@@ -129,7 +129,7 @@ right camera's timestamps first, for cameras whose clocks were not reset togethe
 Raises cv::Error::StsBadArg when an input is not time-ordered (the message gives the first offending index).
 */
 CV_EXPORTS_W void mergeStereoEvents(InputArray left, InputArray right, OutputArray merged,
-                                    int64 rightTimeOffset = 0);
+                                    double rightTimeOffset = 0);
 
 /** @brief Splits a merged stereo packet by Event::camera, keeping the order within each camera. */
 CV_EXPORTS_W void splitStereoEvents(InputArray merged, OutputArray left, OutputArray right);
