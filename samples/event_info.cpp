@@ -140,13 +140,13 @@ int main(int argc, char** argv)
             leftValue = std::atoi(argv[++k]);
         else if (a == "--sensor" && k + 1 < argc)
         {
-            const std::string v = argv[++k];
-            const int model = findSensorModel(v);
-            if (model >= 0)
-                sensor = getSensorSize(model);
-            else if (std::sscanf(v.c_str(), "%dx%d", &sensor.width, &sensor.height) != 2)
+            try
             {
-                std::cerr << "event_info: --sensor takes WxH or a sensor name, got " << v << "\n";
+                sensor = parseSensorSize(argv[++k]);
+            }
+            catch (const cv::Exception& e)
+            {
+                std::cerr << "event_info: --sensor: " << e.err << "\n";
                 return 2;
             }
         }

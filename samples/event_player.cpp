@@ -81,15 +81,7 @@ bool parse(int argc, char** argv, Options& o)
         else if (a == "--max-frames") o.maxFrames = std::stoi(value());
         else if (a == "--show") o.show = true;
         else if (a == "--one-based") o.oneBased = true;
-        else if (a == "--sensor")
-        {
-            const std::string v = value();
-            const int model = findSensorModel(v);
-            if (model >= 0)
-                o.sensor = getSensorSize(model);
-            else if (std::sscanf(v.c_str(), "%dx%d", &o.sensor.width, &o.sensor.height) != 2)
-                throw std::runtime_error("--sensor takes WxH or a sensor name, got " + v);
-        }
+        else if (a == "--sensor") o.sensor = parseSensorSize(value());
         else if (a == "-h" || a == "--help")
             return false;
         else if (!a.empty() && a[0] == '-')

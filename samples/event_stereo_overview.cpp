@@ -55,15 +55,7 @@ bool parse(int argc, char** argv, Options& o)
         else if (a == "--left-camera-value") o.leftCameraValue = std::stoi(value());
         else if (a == "--window-ms") o.windowMs = std::stod(value());
         else if (a == "--max-disparity") o.maxDisparity = std::stoi(value());
-        else if (a == "--sensor")
-        {
-            const std::string v = value();
-            const int model = findSensorModel(v);
-            if (model >= 0)
-                o.sensor = getSensorSize(model);
-            else if (std::sscanf(v.c_str(), "%dx%d", &o.sensor.width, &o.sensor.height) != 2)
-                throw std::runtime_error("--sensor takes WxH or a sensor name, got " + v);
-        }
+        else if (a == "--sensor") o.sensor = parseSensorSize(value());
         else if (a == "-h" || a == "--help") { usage(); return false; }
         else throw std::runtime_error("unknown option " + a);
     }

@@ -90,6 +90,30 @@ String detectEventFileFormat(const String& path)
     return String();
 }
 
+namespace {
+
+// The back-ends: the name detectEventFileFormat() gives, the apiPreference, and how to open one.
+struct Backend
+{
+    const char* name;
+    int api;
+    Ptr<EventReader> (*open)(const String&, const ReaderOptions&);
+};
+
+const Backend kBackends[] = {
+    { "TEXT", EVENT_CAP_TEXT, openTextReader },
+    { "PROPHESEE_DAT", EVENT_CAP_PROPHESEE_DAT, openDatReader },
+    { "PROPHESEE_RAW", EVENT_CAP_PROPHESEE_RAW, openPropheseeRawReader },
+    { "AEDAT2", EVENT_CAP_AEDAT2, openAedat2Reader },
+    { "AEDAT3", EVENT_CAP_AEDAT3, openAedat3Reader },
+    { "AEDAT4", EVENT_CAP_AEDAT4, openAedat4Reader },
+    { "ROSBAG1", EVENT_CAP_ROSBAG1, openRosBag1Reader },
+    { "ROSBAG2", EVENT_CAP_ROSBAG2, openRosBag2Reader },
+    { "HDF5", EVENT_CAP_HDF5, openHdf5Reader },
+};
+
+}  // namespace
+
 class EventCapture::Impl
 {
 public:
@@ -149,25 +173,10 @@ public:
         if (backend == EVENT_CAP_ANY)
         {
             const String fmt = detectEventFileFormat(path);
-            if (fmt == "PROPHESEE_DAT")
-                backend = EVENT_CAP_PROPHESEE_DAT;
-            else if (fmt == "PROPHESEE_RAW")
-                backend = EVENT_CAP_PROPHESEE_RAW;
-            else if (fmt == "AEDAT2")
-                backend = EVENT_CAP_AEDAT2;
-            else if (fmt == "AEDAT3")
-                backend = EVENT_CAP_AEDAT3;
-            else if (fmt == "AEDAT4")
-                backend = EVENT_CAP_AEDAT4;
-            else if (fmt == "ROSBAG1")
-                backend = EVENT_CAP_ROSBAG1;
-            else if (fmt == "ROSBAG2")
-                backend = EVENT_CAP_ROSBAG2;
-            else if (fmt == "HDF5")
-                backend = EVENT_CAP_HDF5;
-            else if (fmt == "TEXT")
-                backend = EVENT_CAP_TEXT;
-            else
+            for (const Backend& b : kBackends)
+                if (fmt == b.name)
+                    backend = b.api;
+            if (backend == EVENT_CAP_ANY)
             {
                 FileInput probe(path);  // raises the precise reason when the file cannot be read at all
                 if (probe.size() == 0)
@@ -176,21 +185,10 @@ public:
                                             "format)", path.c_str()));
             }
         }
-        switch (backend)
-        {
-        case EVENT_CAP_TEXT: return openTextReader(path, opt);
-        case EVENT_CAP_PROPHESEE_DAT: return openDatReader(path, opt);
-        case EVENT_CAP_PROPHESEE_RAW: return openPropheseeRawReader(path, opt);
-        case EVENT_CAP_AEDAT2: return openAedat2Reader(path, opt);
-        case EVENT_CAP_AEDAT3: return openAedat3Reader(path, opt);
-        case EVENT_CAP_AEDAT4: return openAedat4Reader(path, opt);
-        case EVENT_CAP_ROSBAG1: return openRosBag1Reader(path, opt);
-        case EVENT_CAP_ROSBAG2: return openRosBag2Reader(path, opt);
-        case EVENT_CAP_HDF5: return openHdf5Reader(path, opt);
-        default:
-            CV_Error_(Error::StsBadArg, ("%s: apiPreference %d is not an available EventCapture back-end",
-                                         path.c_str(), api));
-        }
+        for (const Backend& b : kBackends)
+            if (b.api == backend)
+                return b.open(path, opt);
+        CV_Error_(Error::StsBadArg, ("%s: apiPreference %d is not an available EventCapture back-end", path.c_str(), api));
     }
 
     // How the source was opened, to reopen it for a backward seek.
@@ -400,38 +398,38 @@ EventCapture::EventCapture(const String& source, int apiPreference) : impl(makeP
 
 EventCapture::~EventCapture() {}
 
-bool EventCapture::open(const String& source, int apiPreference)
+namespace {
+
+// Runs an opening step; on failure the capture is closed and, as the exception mode says, the error is raised
+// or only recorded (getLastError()) and false returned.
+template<typename Open>
+bool guardedOpen(EventCapture::Impl& impl, Open open)
 {
     try
     {
-        impl->open(source, apiPreference);
+        open();
         return true;
     }
     catch (const cv::Exception& e)
     {
-        impl->close();
-        impl->lastError = e.err;
-        if (impl->exceptionMode)
+        impl.close();
+        impl.lastError = e.err;
+        if (impl.exceptionMode)
             throw;
         return false;
     }
 }
 
+}  // namespace
+
+bool EventCapture::open(const String& source, int apiPreference)
+{
+    return guardedOpen(*impl, [&]() { impl->open(source, apiPreference); });
+}
+
 bool EventCapture::openStereo(const String& leftSource, const String& rightSource, int apiPreference)
 {
-    try
-    {
-        impl->openStereo(leftSource, rightSource, apiPreference);
-        return true;
-    }
-    catch (const cv::Exception& e)
-    {
-        impl->close();
-        impl->lastError = e.err;
-        if (impl->exceptionMode)
-            throw;
-        return false;
-    }
+    return guardedOpen(*impl, [&]() { impl->openStereo(leftSource, rightSource, apiPreference); });
 }
 
 bool EventCapture::open(const String& source, int apiPreference, const std::vector<int>& params)

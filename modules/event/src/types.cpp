@@ -5,6 +5,7 @@
 #include "precomp.hpp"
 
 #include <cctype>
+#include <cstdio>
 #include <ostream>
 
 namespace cv {
@@ -83,6 +84,19 @@ int findSensorModel(const String& name)
         if (lowercase(s.name) == key)
             return s.model;
     return -1;
+}
+
+Size parseSensorSize(const String& text)
+{
+    const int model = findSensorModel(text);
+    if (model >= 0)
+        return getSensorSize(model);
+    int w = 0, h = 0;
+    char extra = 0;
+    if (std::sscanf(text.c_str(), "%dx%d%c", &w, &h, &extra) == 2 && w > 0 && h > 0 && w <= 32768 && h <= 32768)
+        return Size(w, h);
+    CV_Error_(Error::StsBadArg, ("sensor size \"%s\": expected WxH (e.g. 346x260) or a sensor name (DVS128, "
+                                 "DAVIS240, DAVIS346, DVXplorer, DVXplorerLite, Gen3, Gen4)", text.c_str()));
 }
 
 Mat_<Event> getEventMat(InputArray events)

@@ -6,14 +6,6 @@
 
 namespace opencv_test { namespace {
 
-std::vector<Event> readAll(EventCapture& cap)
-{
-    std::vector<Event> all, packet;
-    while (cap.read(packet))
-        all.insert(all.end(), packet.begin(), packet.end());
-    return all;
-}
-
 // Asserts that a cv::Exception is raised whose message contains every fragment.
 template<typename F>
 void expectErrorMentioning(F f, const std::vector<std::string>& fragments)
@@ -93,7 +85,7 @@ TEST(Event_Capture_Text, size_header_line_and_out_of_sensor_events_are_counted)
     const std::string path = writeTempFile("4 3\n0.1 0 0 1\n0.2 4 0 1\n0.3 3 2 0\n0.4 1 3 1\n", ".txt");
     EventCapture cap(path);
     EXPECT_EQ(Size(4, 3), cap.getSensorSize());
-    std::vector<Event> all = readAll(cap);
+    std::vector<Event> all = readAllEvents(cap);
     ASSERT_EQ(2u, all.size());
     EXPECT_EQ(Event(100000, 0, 0, POLARITY_ON), all[0]);
     EXPECT_EQ(Event(300000, 3, 2, POLARITY_OFF), all[1]);
@@ -112,7 +104,7 @@ TEST(Event_Capture_Text, time_order_policies)
         cap.set(EVENT_CAP_PROP_TIME_ORDER_POLICY, policies[k]);
         cap.set(EVENT_CAP_PROP_BATCH_EVENTS, 100);
         ASSERT_TRUE(cap.open(path));
-        std::vector<Event> all = readAll(cap);
+        std::vector<Event> all = readAllEvents(cap);
         ASSERT_EQ(k == 2 ? 3u : 4u, all.size()) << "policy " << policies[k];
         for (size_t i = 0; i < all.size(); i++)
             EXPECT_EQ(expectedT[k][i], all[i].t) << "policy " << policies[k] << " event " << i;
@@ -121,7 +113,7 @@ TEST(Event_Capture_Text, time_order_policies)
     EventCapture strict;
     strict.set(EVENT_CAP_PROP_TIME_ORDER_POLICY, EVENT_TIME_ORDER_ERROR);
     ASSERT_TRUE(strict.open(path));
-    expectErrorMentioning([&]() { readAll(strict); }, { path, "back in time" });
+    expectErrorMentioning([&]() { readAllEvents(strict); }, { path, "back in time" });
     std::remove(path.c_str());
 }
 
@@ -130,7 +122,7 @@ TEST(Event_Capture_Text, malformed_line_names_file_offset_and_line)
     const std::string path = writeTempFile("0.1 1 2 1\n0.2 1 x 0\n", ".txt");
     EventCapture cap(path);
     std::vector<Event> b;
-    expectErrorMentioning([&]() { readAll(cap); }, { path, "byte 10", "line 2", "not a number" });
+    expectErrorMentioning([&]() { readAllEvents(cap); }, { path, "byte 10", "line 2", "not a number" });
 
     EventCapture quiet;
     quiet.set(EVENT_CAP_PROP_EXCEPTION_MODE, 0);
@@ -173,7 +165,7 @@ TEST(Event_Capture_Text, stereo_file_grouped_by_camera_is_merged_in_time)
     cap.set(EVENT_CAP_PROP_BATCH_EVENTS, 4);
     cap.set(EVENT_CAP_PROP_RIGHT_TIME_OFFSET_US, 1);
     ASSERT_TRUE(cap.open(path));
-    std::vector<Event> all = readAll(cap);
+    std::vector<Event> all = readAllEvents(cap);
     ASSERT_EQ(6u, all.size());
     const int x[] = { 1, 4, 5, 2, 3, 6 };           // right times shifted by +1: 11, 31, 51
     const int64 t[] = { 11, 20, 30, 31, 51, 60 };
@@ -196,7 +188,7 @@ TEST(Event_Capture_Text, two_files_open_as_a_stereo_pair)
     cap.set(EVENT_CAP_PROP_BATCH_EVENTS, 10);
     ASSERT_TRUE(cap.openStereo(l, r));
     EXPECT_EQ(1.0, cap.get(EVENT_CAP_PROP_STEREO));
-    std::vector<Event> all = readAll(cap);
+    std::vector<Event> all = readAllEvents(cap);
     ASSERT_EQ(4u, all.size());
     EXPECT_EQ(Event(100, 1, 1, 1, CAMERA_LEFT), all[0]);
     EXPECT_EQ(Event(200, 3, 3, 1, CAMERA_RIGHT), all[1]);
@@ -259,7 +251,7 @@ TEST(Event_Capture_Dat, decodes_records_and_unwraps_32bit_time)
     EXPECT_EQ("PROPHESEE_DAT", cap.getBackendName());
     EXPECT_EQ(Size(640, 480), cap.getSensorSize());
     cap.set(EVENT_CAP_PROP_BATCH_EVENTS, 10);
-    std::vector<Event> all = readAll(cap);
+    std::vector<Event> all = readAllEvents(cap);
     ASSERT_EQ(3u, all.size());
     EXPECT_EQ(Event(10, 5, 6, POLARITY_ON), all[0]);
     EXPECT_EQ(Event(0xFFFFFFF0LL, 639, 479, POLARITY_OFF), all[1]);
@@ -317,7 +309,7 @@ TEST(Event_Capture_Real, ncars_dat_counts_and_ranges)
     EventCapture cap(path);
     EXPECT_EQ("PROPHESEE_DAT", cap.getBackendName());
     cap.set(EVENT_CAP_PROP_BATCH_EVENTS, 1000);
-    std::vector<Event> all = readAll(cap);
+    std::vector<Event> all = readAllEvents(cap);
     ASSERT_EQ(2009u, all.size());  // shared/data/README.md: 2,009 events, 0.1 s, x 0..77, y 0..41
     int maxX = 0, maxY = 0, minX = 1 << 20, minY = 1 << 20;
     for (const Event& e : all)

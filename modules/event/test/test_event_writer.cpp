@@ -26,10 +26,7 @@ std::vector<Event> randomStream(int n, Size size, int camera, uint64 seed)
 std::vector<Event> readBack(const std::string& path)
 {
     EventCapture cap(path);
-    cap.set(EVENT_CAP_PROP_BATCH_EVENTS, 777);  // batches that do not line up with the packets
-    std::vector<Event> all, packet;
-    while (cap.read(packet))
-        all.insert(all.end(), packet.begin(), packet.end());
+    const std::vector<Event> all = readAllEvents(cap, 777);  // batches that do not line up with the packets
     EXPECT_EQ(0.0, cap.get(EVENT_CAP_PROP_REJECTED_OUTSIDE));
     EXPECT_EQ(0.0, cap.get(EVENT_CAP_PROP_TIME_BACKWARDS));
     return all;

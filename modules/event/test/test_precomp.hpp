@@ -29,6 +29,17 @@ inline std::string requireSharedData(const std::string& relative)
     return path;
 }
 
+/** Every event @p cap delivers, read in batches of @p batch events (batches that need not line up with the
+file's own packets). */
+inline std::vector<Event> readAllEvents(EventCapture& cap, int batch = 1 << 20)
+{
+    cap.set(EVENT_CAP_PROP_BATCH_EVENTS, batch);
+    std::vector<Event> all, packet;
+    while (cap.read(packet))
+        all.insert(all.end(), packet.begin(), packet.end());
+    return all;
+}
+
 /** Writes @p content to a fresh temporary file with the given suffix and returns its path. */
 inline std::string writeTempFile(const std::string& content, const std::string& suffix)
 {

@@ -18,15 +18,6 @@ uint32_t davisAddress(int rawX, int rawY, int on)
     return ((uint32_t)rawY << 22) | ((uint32_t)rawX << 12) | ((uint32_t)on << 11);
 }
 
-std::vector<Event> readAllEvents(EventCapture& cap)
-{
-    cap.set(EVENT_CAP_PROP_BATCH_EVENTS, 1 << 20);
-    std::vector<Event> all, packet;
-    while (cap.read(packet))
-        all.insert(all.end(), packet.begin(), packet.end());
-    return all;
-}
-
 TEST(Event_Capture_Aedat2, davis240_records_flip_to_top_left_and_skip_non_dvs)
 {
     std::string f = "#!AER-DAT2.0\r\n# This is a raw AE data file\r\n# AEChip: eu.seebetter.ini.chips.davis.DAVIS240C\r\n";

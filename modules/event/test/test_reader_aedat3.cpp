@@ -49,10 +49,7 @@ TEST(Event_Capture_Aedat3, polarity_packets_overflow_and_skipped_types)
     EventCapture cap(path);
     EXPECT_EQ("AEDAT3", cap.getBackendName());
     EXPECT_EQ(Size(346, 260), cap.getSensorSize());
-    cap.set(EVENT_CAP_PROP_BATCH_EVENTS, 100);
-    std::vector<Event> ev, packet;
-    while (cap.read(packet))
-        ev.insert(ev.end(), packet.begin(), packet.end());
+    std::vector<Event> ev = readAllEvents(cap, 100);
     ASSERT_EQ(3u, ev.size());
     EXPECT_EQ(Event(100, 0, 0, POLARITY_ON), ev[0]);
     EXPECT_EQ(Event(200, 345, 259, POLARITY_OFF), ev[1]);

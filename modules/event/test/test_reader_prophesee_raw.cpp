@@ -6,15 +6,6 @@
 
 namespace opencv_test { namespace {
 
-std::vector<Event> readAllEvents(EventCapture& cap)
-{
-    cap.set(EVENT_CAP_PROP_BATCH_EVENTS, 1 << 20);
-    std::vector<Event> all, packet;
-    while (cap.read(packet))
-        all.insert(all.end(), packet.begin(), packet.end());
-    return all;
-}
-
 template<typename Word>
 void appendWord(std::string& s, Word w)
 {

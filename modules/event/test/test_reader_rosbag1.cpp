@@ -118,15 +118,6 @@ std::string bag(const std::string& inner, const std::string& compression, const 
     return magic + header(indexPos) + chunk + index;
 }
 
-std::vector<Event> readAllEvents(EventCapture& cap)
-{
-    cap.set(EVENT_CAP_PROP_BATCH_EVENTS, 1 << 20);
-    std::vector<Event> all, packet;
-    while (cap.read(packet))
-        all.insert(all.end(), packet.begin(), packet.end());
-    return all;
-}
-
 TEST(Event_Capture_RosBag1, dvs_event_array_in_an_uncompressed_chunk)
 {
     const std::vector<Event> ev = { Event(1000001, 3, 4, 1), Event(1000002, 239, 179, 0), Event(2500000, 0, 0, 1) };

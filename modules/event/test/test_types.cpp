@@ -217,6 +217,10 @@ TEST(Event_Types, sensor_models)
     EXPECT_EQ(-1, findSensorModel("no such camera"));
     EXPECT_EQ("DAVIS240", getSensorModelName(SENSOR_DAVIS240));
     EXPECT_THROW(getSensorSize(42), cv::Exception);
+    EXPECT_EQ(Size(346, 260), parseSensorSize("346x260"));
+    EXPECT_EQ(Size(128, 128), parseSensorSize("dvs128"));
+    EXPECT_THROW(parseSensorSize("346x"), cv::Exception);
+    EXPECT_THROW(parseSensorSize("346x260x3"), cv::Exception);
 }
 
 }} // namespace

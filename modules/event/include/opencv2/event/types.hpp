@@ -94,6 +94,10 @@ CV_EXPORTS_W int findSensorModel(const String& name);
 /** @brief The canonical name of a sensor model ("DAVIS346", ...). */
 CV_EXPORTS_W String getSensorModelName(int model);
 
+/** @brief Parses a sensor size given as "WxH" (e.g. "346x260") or as a sensor name (see findSensorModel()),
+as command-line tools take it. Raises cv::Error::StsBadArg naming the text when it is neither. */
+CV_EXPORTS_W Size parseSensorSize(const String& text);
+
 /** @brief Views an event packet as an N x 1 `Mat_<Event>` without copying.
 
 Accepts an N x 1 or 1 x N continuous Mat of type EVENT_MAT_TYPE, a `std::vector<Event>`, or an empty
