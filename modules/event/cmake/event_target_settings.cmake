@@ -67,6 +67,11 @@ function(opencv_event_configure_library target)
       target_compile_definitions(${target} PRIVATE OPENCV_EVENT_HAVE_${dep}=1)
     endif()
   endforeach()
+  opencv_event_link_test_codecs(${target})
+endfunction()
+
+# bzip2 and HDF5 are also linked into the tests: they write bz2 ROS bag chunks and MVSEC fixture files.
+function(opencv_event_link_test_codecs target)
   if(OPENCV_EVENT_BZIP2_FOUND)
     target_link_libraries(${target} PRIVATE BZip2::BZip2)
     target_compile_definitions(${target} PRIVATE OPENCV_EVENT_HAVE_BZIP2=1)
@@ -74,7 +79,6 @@ function(opencv_event_configure_library target)
   opencv_event_link_hdf5(${target})
 endfunction()
 
-# HDF5 is also linked into the tests: they write MVSEC fixture files with it.
 function(opencv_event_link_hdf5 target)
   if(OPENCV_EVENT_HDF5_FOUND)
     target_include_directories(${target} SYSTEM PRIVATE ${HDF5_C_INCLUDE_DIRS} ${HDF5_INCLUDE_DIRS})
@@ -85,7 +89,7 @@ endfunction()
 
 function(opencv_event_configure_test target)
   set_target_properties(${target} PROPERTIES CXX_STANDARD 17 CXX_STANDARD_REQUIRED ON CXX_EXTENSIONS OFF)
-  opencv_event_link_hdf5(${target})
+  opencv_event_link_test_codecs(${target})
   target_compile_definitions(${target} PRIVATE
     OPENCV_EVENT_SHARED_DATA_DEFAULT="${OPENCV_EVENT_SHARED_DATA_DEFAULT}")
 endfunction()

@@ -4,6 +4,10 @@
 
 #include "test_precomp.hpp"
 
+#ifdef OPENCV_EVENT_HAVE_BZIP2
+#include <bzlib.h>
+#endif
+
 namespace opencv_test { namespace {
 
 // ROS1 bag fixtures built from the documented layout (shared/docs/formats.md 2.8), independently of the reader.
@@ -106,7 +110,17 @@ std::string lz4StoredFrame(const std::string& data)
 std::string bag(const std::string& inner, const std::string& compression, const std::string& index)
 {
     const std::string magic = "#ROSBAG V2.0\n";
-    const std::string payload = compression == "lz4" ? lz4StoredFrame(inner) : inner;
+    std::string payload = compression == "lz4" ? lz4StoredFrame(inner) : inner;
+#ifdef OPENCV_EVENT_HAVE_BZIP2
+    if (compression == "bz2")
+    {
+        std::vector<char> out(inner.size() * 2 + 600);
+        unsigned int n = (unsigned int)out.size();
+        std::string src = inner;
+        CV_Assert(BZ2_bzBuffToBuffCompress(out.data(), &n, &src[0], (unsigned int)src.size(), 9, 0, 0) == BZ_OK);
+        payload.assign(out.data(), n);
+    }
+#endif
     const std::string chunk = record(field("op", std::string(1, '\x05')) + field("compression", compression) +
                                      field("size", bin<uint32_t>((uint32_t)inner.size())), payload);
     // The bag header's length does not depend on index_pos: compute it with 0 first.
@@ -156,6 +170,23 @@ TEST(Event_Capture_RosBag1, two_event_topics_in_an_lz4_chunk_are_a_stereo_pair)
     EXPECT_EQ(Event(30, 2, 1, 1, CAMERA_LEFT), back[2]);
     EXPECT_EQ(Event(30, 6, 1, 0, CAMERA_RIGHT), back[3]);
     std::remove(path.c_str());
+}
+
+TEST(Event_Capture_RosBag1, bz2_chunk)
+{
+#ifndef OPENCV_EVENT_HAVE_BZIP2
+    throw SkipTestException("built without libbz2");
+#else
+    const std::vector<Event> ev = { Event(7, 1, 2, 1), Event(9, 3, 4, 0) };
+    const std::string conn = connectionRecord(0, "/dvs/events", "dvs_msgs/EventArray", kDvsMd5);
+    const std::string path = writeTempFile(bag(conn + messageRecord(0, eventArray(16, 16, ev)), "bz2", conn), ".bag");
+    EventCapture cap(path);
+    std::vector<Event> back = readAllEvents(cap);
+    ASSERT_EQ(2u, back.size());
+    EXPECT_EQ(ev[0], back[0]);
+    EXPECT_EQ(ev[1], back[1]);
+    std::remove(path.c_str());
+#endif
 }
 
 TEST(Event_Capture_RosBag1, event_packet_libcaer_encoding_with_rollover)
