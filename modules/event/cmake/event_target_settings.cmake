@@ -70,8 +70,13 @@ function(opencv_event_configure_library target)
   opencv_event_link_test_codecs(${target})
 endfunction()
 
-# bzip2 and HDF5 are also linked into the tests: they write bz2 ROS bag chunks and MVSEC fixture files.
+# bzip2, sqlite3 and HDF5 are also linked into the tests: they write bz2 ROS bag chunks, ROS2 bag databases
+# and MVSEC fixture files.
 function(opencv_event_link_test_codecs target)
+  if(OPENCV_EVENT_SQLITE3_FOUND)
+    target_link_libraries(${target} PRIVATE PkgConfig::OPENCV_EVENT_SQLITE3)
+    target_compile_definitions(${target} PRIVATE OPENCV_EVENT_HAVE_SQLITE3=1)
+  endif()
   if(OPENCV_EVENT_BZIP2_FOUND)
     target_link_libraries(${target} PRIVATE BZip2::BZip2)
     target_compile_definitions(${target} PRIVATE OPENCV_EVENT_HAVE_BZIP2=1)

@@ -4,7 +4,110 @@
 
 #include "test_precomp.hpp"
 
+#ifdef OPENCV_EVENT_HAVE_SQLITE3
+#include <sqlite3.h>
+#endif
+
 namespace opencv_test { namespace {
+
+#ifdef OPENCV_EVENT_HAVE_SQLITE3
+// CDR (little-endian) serialisation of event_camera_msgs/msg/EventPacket, aligned relative to byte 4.
+struct Cdr
+{
+    std::string b = std::string("\x00\x01\x00\x00", 4);
+    void align(size_t a) { while ((b.size() - 4) % a) b.push_back('\0'); }
+    template<typename T> void put(T v) { align(sizeof(T)); b.append(reinterpret_cast<const char*>(&v), sizeof(T)); }
+    void str(const std::string& s) { put<uint32_t>((uint32_t)s.size() + 1); b += s; b.push_back('\0'); }
+};
+
+std::string eventPacket(uint32_t width, uint32_t height, const std::string& encoding, uint64_t timeBase,
+                        const std::vector<uint16_t>& words)
+{
+    Cdr c;
+    c.put<int32_t>(1700000000);
+    c.put<uint32_t>(5);
+    c.str("camera");  // 7 bytes with the NUL: the next field needs padding
+    c.put<uint32_t>(height);
+    c.put<uint32_t>(width);
+    c.put<uint64_t>(42);  // seq: 8-byte alignment
+    c.put<uint64_t>(timeBase);
+    c.str(encoding);
+    c.put<uint8_t>(0);  // is_bigendian
+    c.put<uint32_t>((uint32_t)(words.size() * 2));
+    c.b.append(reinterpret_cast<const char*>(words.data()), words.size() * 2);
+    return c.b;
+}
+
+void writeBag(const std::string& db, const std::vector<std::pair<std::string, std::string>>& topicMessages)
+{
+    sqlite3* h = nullptr;
+    ASSERT_EQ(SQLITE_OK, sqlite3_open(db.c_str(), &h));
+    sqlite3_exec(h, "CREATE TABLE topics(id INTEGER PRIMARY KEY, name TEXT, type TEXT, serialization_format TEXT, "
+                    "offered_qos_profiles TEXT);"
+                    "CREATE TABLE messages(id INTEGER PRIMARY KEY, topic_id INTEGER, timestamp INTEGER, data BLOB);",
+                 nullptr, nullptr, nullptr);
+    std::vector<std::string> names;
+    for (const auto& tm : topicMessages)
+        if (std::find(names.begin(), names.end(), tm.first) == names.end())
+            names.push_back(tm.first);
+    for (size_t i = 0; i < names.size(); i++)
+    {
+        const std::string sql = "INSERT INTO topics VALUES(" + std::to_string(i + 1) + ", '" + names[i] +
+                                "', 'event_camera_msgs/msg/EventPacket', 'cdr', '');";
+        sqlite3_exec(h, sql.c_str(), nullptr, nullptr, nullptr);
+    }
+    int64 stamp = 1000;
+    for (const auto& tm : topicMessages)
+    {
+        sqlite3_stmt* s = nullptr;
+        sqlite3_prepare_v2(h, "INSERT INTO messages(topic_id, timestamp, data) VALUES(?, ?, ?)", -1, &s, nullptr);
+        const int topic = (int)(std::find(names.begin(), names.end(), tm.first) - names.begin()) + 1;
+        sqlite3_bind_int(s, 1, topic);
+        sqlite3_bind_int64(s, 2, stamp++);
+        sqlite3_bind_blob(s, 3, tm.second.data(), (int)tm.second.size(), SQLITE_TRANSIENT);
+        ASSERT_EQ(SQLITE_DONE, sqlite3_step(s));
+        sqlite3_finalize(s);
+    }
+    sqlite3_close(h);
+}
+
+uint16_t w(int type, int payload) { return (uint16_t)((type << 12) | payload); }
+#endif
+
+TEST(Event_Capture_RosBag2, evt3_packets_in_cdr_and_two_topics_make_stereo)
+{
+#ifndef OPENCV_EVENT_HAVE_SQLITE3
+    throw SkipTestException("built without sqlite3");
+#else
+    // EVT3 words (formats.md 2.4): TIME_HIGH 1 -> 4096 us; TIME_LOW; ADDR_Y; ADDR_X (bit 11 = ON).
+    const std::string left1 = eventPacket(640, 480, "evt3", 0, { w(0x8, 1), w(0x6, 10), w(0x0, 5), w(0x2, (1 << 11) | 7) });
+    const std::string left2 = eventPacket(640, 480, "evt3", 0, { w(0x6, 30), w(0x0, 6), w(0x2, 8) });  // decoder state carries over
+    const std::string right = eventPacket(640, 480, "evt3", 0, { w(0x8, 1), w(0x6, 20), w(0x0, 9), w(0x2, 639) });
+    const std::string db = cv::tempfile(".db3");
+    writeBag(db, { { "/cam_left/events", left1 }, { "/cam_right/events", right }, { "/cam_left/events", left2 } });
+    EXPECT_EQ("ROSBAG2", detectEventFileFormat(db));
+    EventCapture cap(db);
+    EXPECT_EQ(Size(640, 480), cap.getSensorSize());
+    EXPECT_EQ(1.0, cap.get(EVENT_CAP_PROP_STEREO));
+    std::vector<Event> ev = readAllEvents(cap);
+    ASSERT_EQ(3u, ev.size());
+    EXPECT_EQ(Event(4106, 7, 5, POLARITY_ON, CAMERA_LEFT), ev[0]);
+    EXPECT_EQ(Event(4116, 639, 9, POLARITY_OFF, CAMERA_RIGHT), ev[1]);
+    EXPECT_EQ(Event(4126, 8, 6, POLARITY_OFF, CAMERA_LEFT), ev[2]);
+    std::remove(db.c_str());
+
+    // An unsupported encoding names the file and the encoding.
+    const std::string other = cv::tempfile(".db3");
+    writeBag(other, { { "/events", eventPacket(8, 8, "mono", 0, { 0, 0, 0, 0 }) } });
+    try { EventCapture c(other); readAllEvents(c); FAIL() << "encoding mono accepted"; }
+    catch (const cv::Exception& e)
+    {
+        EXPECT_NE(std::string::npos, e.err.find(other)) << e.err;
+        EXPECT_NE(std::string::npos, e.err.find("\"mono\"")) << e.err;
+    }
+    std::remove(other.c_str());
+#endif
+}
 
 // shared/data/README.md: ROS2 sqlite3 bag, EventPacket with libcaer encoding, 640x480, 334,331 events; the
 // int32 microsecond timestamp wraps once: the stream must stay time-ordered across it.
