@@ -5,8 +5,9 @@
 //   event_stereo_overview [--input FILE | --left FILE --right FILE] [--sensor 128x128]
 //                         [--left-camera-value 1] [--window-ms 33] [--max-disparity 40] [--output DIR]
 //
-// Without input it writes a small synthetic stereo recording (vertical bars moving right, disparity 8 px)
-// into the output folder and reads that.
+// Without input it simulates the built-in default recording (StereoEventSimulator scene --scene, default
+// "two_planes": a textured plane sliding over a textured background, disparities 20 and 10 px), writes it
+// with its ground truth into the output folder (<scene>.aedat4 + .gt.csv) and reads that.
 
 #include <opencv2/event.hpp>
 #include <opencv2/imgcodecs.hpp>
@@ -25,7 +26,8 @@ namespace {
 
 struct Options
 {
-    std::string input, left, right, output = "output";
+    std::string input, left, right, output = "output", scene = "two_planes";
+    double simulateMs = 1000;
     Size sensor;
     int leftCameraValue = 0;
     double windowMs = 33;
@@ -35,7 +37,8 @@ struct Options
 void usage()
 {
     std::cerr << "usage: event_stereo_overview [--input FILE | --left FILE --right FILE] [--sensor WxH]\n"
-                 "       [--left-camera-value 0|1] [--window-ms MS] [--max-disparity PX] [--output DIR]\n";
+                 "       [--left-camera-value 0|1] [--window-ms MS] [--max-disparity PX] [--output DIR]\n"
+                 "       [--scene plane|two_planes|moving_line|cluttered] [--simulate-ms MS]   (without input)\n";
 }
 
 bool parse(int argc, char** argv, Options& o)
@@ -52,6 +55,8 @@ bool parse(int argc, char** argv, Options& o)
         else if (a == "--left") o.left = value();
         else if (a == "--right") o.right = value();
         else if (a == "--output") o.output = value();
+        else if (a == "--scene") o.scene = value();
+        else if (a == "--simulate-ms") o.simulateMs = std::stod(value());
         else if (a == "--left-camera-value") o.leftCameraValue = std::stoi(value());
         else if (a == "--window-ms") o.windowMs = std::stod(value());
         else if (a == "--max-disparity") o.maxDisparity = std::stoi(value());
@@ -60,35 +65,6 @@ bool parse(int argc, char** argv, Options& o)
         else throw std::runtime_error("unknown option " + a);
     }
     return true;
-}
-
-// A 64 x 48 stereo pair watching vertical bars that move right at 400 px/s; the right camera sees them
-// 8 px further left (disparity 8). One event per pixel crossing, ON at the leading edge, OFF at the trailing.
-std::string writeSyntheticRecording(const std::string& dir)
-{
-    const std::string path = dir + "/synthetic_stereo.txt";
-    std::ofstream out(path);
-    out << "# synthetic stereo recording written by event_stereo_overview: t_us x y p camera\n";
-    const int width = 64, height = 48, disparity = 8, barWidth = 3, spacing = 16;
-    const double speed = 400;  // px/s
-    out << width << ' ' << height << '\n';  // size line
-    for (int step = 0; step < 800; step++)  // 2 s: the bars advance one pixel every 2.5 ms
-    {
-        const int64 t = (int64)std::llround(step * 1e6 / speed);
-        for (int y = 4; y < height - 4; y++)  // a row every microsecond: time-ordered per camera
-            for (int cam = 0; cam < 2; cam++)
-                for (int bar = -4; bar < 8; bar++)
-                {
-                    const int lead = (step % width) + bar * spacing - (cam ? disparity : 0);
-                    for (int edge = 0; edge < 2; edge++)
-                    {
-                        const int x = edge == 0 ? lead : lead - barWidth;
-                        if (x >= 0 && x < width)
-                            out << t + y << ' ' << x << ' ' << y << ' ' << (edge == 0 ? 1 : 0) << ' ' << cam << '\n';
-                    }
-                }
-    }
-    return path;
 }
 
 // Colour picture of a time surface: recent events bright, ON red, OFF blue.
@@ -142,8 +118,10 @@ int main(int argc, char** argv)
         ::mkdir(opt.output.c_str(), 0755);
         if (opt.input.empty() && opt.left.empty())
         {
-            opt.input = writeSyntheticRecording(opt.output);
-            std::cerr << "no input given: wrote and reading " << opt.input << "\n";
+            opt.input = opt.output + "/" + opt.scene + ".aedat4";
+            std::cerr << "no input given: simulating " << opt.simulateMs << " ms of scene \"" << opt.scene << "\" into "
+                      << opt.input << " (+ .gt.csv)\n";
+            writeSimulatedRecording(StereoEventSimulator::create(opt.scene), opt.input, opt.simulateMs * 1000);
         }
 
         EventCapture cap;

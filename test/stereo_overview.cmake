@@ -1,5 +1,5 @@
 # ctest `stereo_overview_*`: runs the main-job sample and checks the dominant disparity in its summary
-# against the known value (synthetic recording: 8 px by construction; TUM Fan: +8 px, shared/data/README.md).
+# against the known value (simulated recording: f * B / Z; TUM Fan: +8 px, shared/data/README.md).
 foreach(v SAMPLE OUTPUT_DIR EXPECTED_DISPARITY)
   if(NOT DEFINED ${v})
     message(FATAL_ERROR "stereo_overview.cmake: ${v} not set")
@@ -12,8 +12,9 @@ if(INPUT)
     message("SKIP: ${INPUT} is absent")
     return()
   endif()
-  list(APPEND args --input "${INPUT}" ${EXTRA_ARGS})
+  list(APPEND args --input "${INPUT}")
 endif()
+list(APPEND args ${EXTRA_ARGS})
 execute_process(COMMAND "${SAMPLE}" ${args} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
 message("${out}")
 if(NOT rc EQUAL 0)

@@ -11,6 +11,8 @@
 #include <cstdio>
 #include <fstream>
 #include <sys/stat.h>
+#include <map>
+#include <numeric>
 
 namespace opencv_test {
 using namespace cv::event;

@@ -9,6 +9,7 @@
 #include "opencv2/event/event_surface.hpp"
 #include "opencv2/event/event_capture.hpp"
 #include "opencv2/event/event_writer.hpp"
+#include "opencv2/event/simulator.hpp"
 
 /** @defgroup event Event cameras: lifetime and stereo disparity
 
@@ -25,6 +26,7 @@ through the usual InputArray / OutputArray (see event::Event for the layout and 
     @defgroup event_types Event records, packets and sensor geometry
     @defgroup event_surface Surface of active events, time surfaces and event frames
     @defgroup event_io Reading recordings and cameras
+    @defgroup event_simulator Stereo event simulator with ground truth
 @}
 */
 

@@ -1,0 +1,143 @@
+// This file is part of OpenCV project.
+// It is subject to the license terms in the LICENSE file found in the top-level directory
+// of this distribution and at http://opencv.org/license.html.
+
+#ifndef OPENCV_EVENT_SIMULATOR_HPP
+#define OPENCV_EVENT_SIMULATOR_HPP
+
+#include "opencv2/event/types.hpp"
+
+namespace cv {
+namespace event {
+
+//! @addtogroup event_simulator
+//! @{
+
+/** @brief Columns of the ground-truth matrix the simulator returns next to its events (N x 6, CV_32F). */
+enum SimulatorGroundTruthColumn
+{
+    GT_DEPTH = 0,      //!< depth of the scene point that caused the event [m] (0 for noise)
+    GT_DISPARITY = 1,  //!< its disparity x_left - x_right = f * B / depth [px] (0 for noise)
+    GT_FLOW_X = 2,     //!< normal optical flow, x [px/s]: the image motion along the brightness gradient
+    GT_FLOW_Y = 3,     //!< normal optical flow, y [px/s]
+    GT_LIFETIME = 4,   //!< time for the edge to move one pixel, 1 / |normal flow| [us] (0 when it does not move)
+    GT_FLAGS = 5       //!< SimulatorEventFlags, as a number
+};
+
+/** @brief Flags in the GT_FLAGS column. */
+enum SimulatorEventFlags
+{
+    GT_FLAG_NOISE = 1,    //!< background-activity noise: no scene point caused it
+    GT_FLAG_OCCLUDED = 2  //!< the scene point is hidden from the other camera: it has no stereo counterpart
+};
+
+/** @brief Procedural textures of simulated planes. */
+enum SimulatorTexture
+{
+    TEXTURE_BLOCKS = 0,   //!< random-intensity square cells with sharp (about 1/8 cell) edges, rotated
+    TEXTURE_UNIFORM = 1   //!< one intensity (a thin line or a plain background)
+};
+
+/** @brief A textured planar rectangle moving rigidly in the scene.
+
+World frame = left camera frame: +X right, +Y down, +Z forward (depth), metres. The right camera sits at
+(baseline, 0, 0), both looking along +Z with the same intrinsics: the pair is rectified. */
+struct CV_EXPORTS SimulatedPlane
+{
+    Vec3d center = Vec3d(0, 0, 1);   //!< centre at t = 0 [m]
+    Vec3d rotation = Vec3d(0, 0, 0); //!< orientation at t = 0, Rodrigues vector; zero = facing the cameras
+    Vec2d halfSize = Vec2d(1, 1);    //!< half width and height in the plane [m]
+    Vec3d velocity = Vec3d(0, 0, 0); //!< linear velocity [m/s]
+    Vec3d angularVelocity = Vec3d(0, 0, 0); //!< angular velocity about the centre, world frame [rad/s]
+    int texture = TEXTURE_BLOCKS;    //!< SimulatorTexture
+    double cellSize = 0.05;          //!< texture cell size [m]
+    double intensity = 1.0;          //!< brightest value (linear units)
+    double contrast = 0.8;           //!< blocks: intensities spread over [intensity * (1 - contrast), intensity]
+    int textureSeed = 1;             //!< blocks: pattern seed
+};
+
+/** @brief Sensors, pair geometry and event generation of the simulator. */
+struct CV_EXPORTS SimulatorSettings
+{
+    Size resolution = Size(240, 180);  //!< pixels per camera
+    double focalLength = 200;          //!< [px]; principal point at the image centre
+    double baseline = 0.1;             //!< [m]
+    double thresholdOn = 0.2;          //!< log-intensity contrast threshold of ON events
+    double thresholdOff = 0.2;         //!< ... of OFF events
+    double thresholdSigma = 0.03;      //!< per-pixel threshold mismatch (standard deviation, absolute)
+    double rightThresholdScale = 1.0;  //!< > 1 makes the right camera less sensitive
+    double refractoryUs = 100;         //!< a pixel fires at most once per this period [us]
+    double noiseRateHz = 0;            //!< background activity per pixel [events/s]
+    double maxPixelStep = 0.25;        //!< adaptive stepping: no point moves more than this between renders [px]
+    double maxStepUs = 1000;           //!< longest render step [us]
+    double backgroundIntensity = 0.05; //!< where no plane is hit
+    int seed = 0;                      //!< everything random (thresholds, noise) derives from it
+
+    /** @brief Presets: SENSOR_DAVIS240 (240 x 180, f = 200 px) and SENSOR_DAVIS346 (346 x 260, f = 250 px). */
+    static SimulatorSettings preset(int sensorModel);
+};
+
+/** @brief A stereo event-camera simulator with per-event ground truth (ESIM-style).
+
+Renders the log intensity of a scene of textured planes for both cameras at adaptively spaced instants,
+so that no image point moves more than SimulatorSettings::maxPixelStep pixels between two renders; a pixel
+emits an event each time its log intensity moves by its contrast threshold from the level of its last
+event, with the time interpolated linearly between the renders. Every event comes with its ground truth
+(see SimulatorGroundTruthColumn). Output is deterministic for a given seed, and streams: generate() hands
+out events up to a time, the memory holds only per-pixel state.
+
+Named scenes (create()):
+- "plane": a textured plane 1 m away translating parallel to the sensor (disparity 20 px at f = 200 px,
+  B = 0.1 m);
+- "two_planes": a textured foreground plane sliding over a textured background twice as far (occlusion);
+- "moving_line": a single thin bright line moving over a dark background; the right camera is 1.6x less
+  sensitive (the paper's asymmetric-sensitivity case);
+- "cluttered": several textured planes at different depths, translating and rotating, with background
+  activity noise.
+*/
+class CV_EXPORTS_W StereoEventSimulator : public Algorithm
+{
+public:
+    /** @brief A simulator of a named scene (see the class description) on a sensor preset. */
+    CV_WRAP static Ptr<StereoEventSimulator> create(const String& scene = "plane", int sensorModel = SENSOR_DAVIS240,
+                                                    int seed = 0);
+    /** @brief A simulator of a custom scene. */
+    static Ptr<StereoEventSimulator> create(const std::vector<SimulatedPlane>& planes, const SimulatorSettings& settings);
+
+    /** @brief Names accepted by create(). */
+    static std::vector<String> sceneNames();
+
+    /** @brief Simulates from the current time up to @p untilUs (exclusive) and returns the events, both
+    cameras merged in time (left first on equal times), with their ground truth (N x 6 CV_32F, rows as
+    the events). Returns false when there was nothing to simulate (untilUs not after the current time). */
+    CV_WRAP virtual bool generate(double untilUs, OutputArray events, OutputArray groundTruth) = 0;
+
+    /** @brief Simulated time reached so far [us]. */
+    CV_WRAP virtual double getTime() const = 0;
+
+    /** @brief Renders the ground-truth disparity map of one camera at the current time (CV_32F, 0 where
+    no plane is hit), e.g. for pictures next to estimated disparities. */
+    CV_WRAP virtual void renderDisparity(int camera, OutputArray disparity) const = 0;
+
+    /** @brief Renders the scene's intensity (CV_32F, linear units) seen by one camera at the current time. */
+    CV_WRAP virtual void renderIntensity(int camera, OutputArray intensity) const = 0;
+
+    virtual const SimulatorSettings& getSettings() const = 0;
+    virtual const std::vector<SimulatedPlane>& getPlanes() const = 0;
+    CV_WRAP virtual Size getSensorSize() const = 0;
+};
+
+/** @brief Simulates @p durationUs of a scene and writes it: the events through EventWriter (stereo; text or
+AEDAT 4.0 by the extension of @p path) and their ground truth to `<path>.gt.csv`, one line per event in the
+same order: `t,x,y,p,camera,depth,disparity,flow_x,flow_y,lifetime,flags` (units as in
+SimulatorGroundTruthColumn). Memory does not grow with the duration.
+@return the number of events written. */
+CV_EXPORTS_W double writeSimulatedRecording(const Ptr<StereoEventSimulator>& simulator, const String& path,
+                                            double durationUs);
+
+//! @}
+
+}  // namespace event
+}  // namespace cv
+
+#endif  // OPENCV_EVENT_SIMULATOR_HPP

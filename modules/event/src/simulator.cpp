@@ -1,0 +1,532 @@
+// This file is part of OpenCV project.
+// It is subject to the license terms in the LICENSE file found in the top-level directory
+// of this distribution and at http://opencv.org/license.html.
+
+// Stereo event simulator (ESIM-style, Rebecq et al. 2018): ray-cast the log intensity of textured moving
+// planes for both cameras at adaptively spaced instants; each pixel fires whenever its log intensity has
+// moved by its threshold since its last event, at a time interpolated between the two renders. Ground truth
+// (depth, disparity, normal flow, lifetime, occlusion) comes from the same ray casts.
+
+#include "precomp.hpp"
+#include "opencv2/calib3d.hpp"
+
+#include <array>
+#include <cstdio>
+#include <limits>
+
+namespace cv {
+namespace event {
+
+SimulatorSettings SimulatorSettings::preset(int sensorModel)
+{
+    SimulatorSettings s;
+    s.resolution = getSensorSize(sensorModel);
+    if (sensorModel == SENSOR_DAVIS346)
+        s.focalLength = 250;
+    else if (sensorModel != SENSOR_DAVIS240)
+        s.focalLength = 0.8 * s.resolution.width;  // about a 64-degree horizontal field of view
+    return s;
+}
+
+namespace {
+
+// Deterministic hash of a texture cell -> [0, 1).
+double cellValue(int64 i, int64 j, int seed)
+{
+    uint64 h = (uint64)i * 0x9E3779B97F4A7C15ULL ^ (uint64)j * 0xC2B2AE3D27D4EB4FULL ^ (uint64)(seed + 1) * 0x165667B19E3779F9ULL;
+    h ^= h >> 29;
+    h *= 0xBF58476D1CE4E5B9ULL;
+    h ^= h >> 32;
+    return (double)(h >> 11) * (1.0 / 9007199254740992.0);
+}
+
+// Cells around position p along one axis with the weight of the upper one: sharp edges 1/8 cell wide.
+inline void edgeBlend(double p, int64& lo, int64& hi, double& wHi)
+{
+    const double halfWidth = 1.0 / 16;
+    const double k = std::floor(p + 0.5);  // nearest cell boundary
+    const double d = p - k;
+    if (d >= halfWidth || d <= -halfWidth)
+    {
+        lo = hi = (int64)std::floor(p);
+        wHi = 0;
+        return;
+    }
+    lo = (int64)k - 1;
+    hi = (int64)k;
+    wHi = (d + halfWidth) / (2 * halfWidth);
+}
+
+struct PlanePose
+{
+    Vec3d c, u, v, n;   // centre, in-plane axes, normal
+    double cosT, sinT;  // texture rotation
+};
+
+struct Render
+{
+    std::vector<float> logI, depth, flowX, flowY;
+};
+
+class StereoEventSimulatorImpl CV_FINAL : public StereoEventSimulator
+{
+public:
+    StereoEventSimulatorImpl(const std::vector<SimulatedPlane>& planes, const SimulatorSettings& s)
+        : planes_(planes), s_(s), rng_((uint64)(s.seed * 7919 + 17))
+    {
+        if (s.resolution.width <= 0 || s.resolution.height <= 0 || !(s.focalLength > 0) || !(s.baseline > 0))
+            CV_Error(Error::StsBadArg, "StereoEventSimulator: resolution, focal length and baseline must be positive");
+        if (!(s.thresholdOn > 0 && s.thresholdOff > 0 && s.maxPixelStep > 0 && s.maxStepUs > 0))
+            CV_Error(Error::StsBadArg, "StereoEventSimulator: thresholds and step limits must be positive");
+        const int n = s.resolution.area();
+        for (int c = 0; c < 2; c++)
+        {
+            const double scale = c == CAMERA_RIGHT ? s.rightThresholdScale : 1.0;
+            cOn_[c].resize(n);
+            cOff_[c].resize(n);
+            for (int i = 0; i < n; i++)
+            {
+                cOn_[c][i] = (float)std::max(0.01, scale * (s.thresholdOn + s.thresholdSigma * rng_.gaussian(1.0)));
+                cOff_[c][i] = (float)std::max(0.01, scale * (s.thresholdOff + s.thresholdSigma * rng_.gaussian(1.0)));
+            }
+            lastEvent_[c].assign(n, -1e18);
+            render(c, 0.0, cur_[c]);
+            ref_[c] = cur_[c].logI;
+        }
+    }
+
+    bool generate(double untilUs, OutputArray events, OutputArray groundTruth) CV_OVERRIDE
+    {
+        if (!(untilUs > delivered_))
+        {
+            events.release();
+            groundTruth.release();
+            return false;
+        }
+        while (t_ < untilUs)
+            step();
+        // Hand out what is before untilUs; events after it wait for the next call, so the output does not
+        // depend on how the simulation is chunked.
+        const int64 until = (int64)std::ceil(untilUs);
+        size_t k = 0;
+        while (k < pendingEvents_.size() && pendingEvents_[k].t < until)
+            k++;
+        Mat(std::vector<Event>(pendingEvents_.begin(), pendingEvents_.begin() + k)).copyTo(events);
+        Mat gt((int)k, 6, CV_32F);
+        if (k)
+            std::memcpy(gt.data, pendingTruth_.data(), k * 6 * sizeof(float));
+        gt.copyTo(groundTruth);
+        pendingEvents_.erase(pendingEvents_.begin(), pendingEvents_.begin() + k);
+        pendingTruth_.erase(pendingTruth_.begin(), pendingTruth_.begin() + 6 * k);
+        delivered_ = untilUs;
+        return true;
+    }
+
+    double getTime() const CV_OVERRIDE { return delivered_; }
+
+    void renderDisparity(int camera, OutputArray disparity) const CV_OVERRIDE
+    {
+        checkCamera(camera);
+        Mat_<float> d(s_.resolution, 0.f);
+        const Render& r = cur_[camera];
+        for (int i = 0; i < s_.resolution.area(); i++)
+            if (r.depth[i] > 0)
+                d(i) = (float)(s_.focalLength * s_.baseline / r.depth[i]);
+        d.copyTo(disparity);
+    }
+
+    void renderIntensity(int camera, OutputArray intensity) const CV_OVERRIDE
+    {
+        checkCamera(camera);
+        Mat_<float> m(s_.resolution);
+        for (int i = 0; i < s_.resolution.area(); i++)
+            m(i) = std::exp(cur_[camera].logI[i]);
+        m.copyTo(intensity);
+    }
+
+    const SimulatorSettings& getSettings() const CV_OVERRIDE { return s_; }
+    const std::vector<SimulatedPlane>& getPlanes() const CV_OVERRIDE { return planes_; }
+    Size getSensorSize() const CV_OVERRIDE { return s_.resolution; }
+    String getDefaultName() const CV_OVERRIDE { return "StereoEventSimulator"; }
+
+private:
+    static void checkCamera(int camera)
+    {
+        if (camera != CAMERA_LEFT && camera != CAMERA_RIGHT)
+            CV_Error_(Error::StsBadArg, ("StereoEventSimulator: camera %d; expected 0 (left) or 1 (right)", camera));
+    }
+
+    PlanePose pose(const SimulatedPlane& p, double tUs) const
+    {
+        const double t = tUs * 1e-6;
+        Matx33d r0, rt;
+        Rodrigues(p.rotation, r0);
+        Rodrigues(p.angularVelocity * t, rt);
+        const Matx33d r = rt * r0;
+        PlanePose q;
+        q.c = p.center + p.velocity * t;
+        q.u = Vec3d(r(0, 0), r(1, 0), r(2, 0));
+        q.v = Vec3d(r(0, 1), r(1, 1), r(2, 1));
+        q.n = Vec3d(r(0, 2), r(1, 2), r(2, 2));
+        const double angle = 0.35 + 1.1 * cellValue(p.textureSeed, 7, 3);  // not axis-aligned: edges of all directions
+        q.cosT = std::cos(angle);
+        q.sinT = std::sin(angle);
+        return q;
+    }
+
+    double texture(const SimulatedPlane& p, const PlanePose& q, double a, double b) const
+    {
+        if (p.texture == TEXTURE_UNIFORM)
+            return p.intensity;
+        const double x = (q.cosT * a + q.sinT * b) / p.cellSize, y = (-q.sinT * a + q.cosT * b) / p.cellSize;
+        int64 x0, x1, y0, y1;
+        double wx, wy;
+        edgeBlend(x, x0, x1, wx);
+        edgeBlend(y, y0, y1, wy);
+        auto value = [&](int64 i, int64 j) { return p.intensity * (1.0 - p.contrast * cellValue(i, j, p.textureSeed)); };
+        const double top = (1 - wx) * value(x0, y0) + wx * value(x1, y0);
+        const double bottom = (1 - wx) * value(x0, y1) + wx * value(x1, y1);
+        return (1 - wy) * top + wy * bottom;
+    }
+
+    // Ray-casts one camera at time t: log intensity, depth, and the image motion of the visible point.
+    void render(int camera, double tUs, Render& out) const
+    {
+        const Size sz = s_.resolution;
+        const double f = s_.focalLength, cx = 0.5 * (sz.width - 1), cy = 0.5 * (sz.height - 1);
+        const Vec3d origin(camera == CAMERA_RIGHT ? s_.baseline : 0.0, 0, 0);
+        std::vector<PlanePose> poses;
+        for (const SimulatedPlane& p : planes_)
+            poses.push_back(pose(p, tUs));
+        const int n = sz.area();
+        out.logI.resize(n);
+        out.depth.resize(n);
+        out.flowX.resize(n);
+        out.flowY.resize(n);
+        const double background = std::log(s_.backgroundIntensity);
+        for (int y = 0; y < sz.height; y++)
+        {
+            for (int x = 0; x < sz.width; x++)
+            {
+                const Vec3d d((x - cx) / f, (y - cy) / f, 1.0);
+                double best = std::numeric_limits<double>::infinity(), value = 0;
+                int hit = -1;
+                Vec3d point;
+                for (size_t k = 0; k < planes_.size(); k++)
+                {
+                    const PlanePose& q = poses[k];
+                    const double denom = q.n.dot(d);
+                    if (std::abs(denom) < 1e-12)
+                        continue;
+                    const double s = q.n.dot(q.c - origin) / denom;  // depth along +Z, since d.z = 1
+                    if (s <= 1e-6 || s >= best)
+                        continue;
+                    const Vec3d pt = origin + s * d;
+                    const double a = q.u.dot(pt - q.c), b = q.v.dot(pt - q.c);
+                    if (std::abs(a) > planes_[k].halfSize[0] || std::abs(b) > planes_[k].halfSize[1])
+                        continue;
+                    best = s;
+                    hit = (int)k;
+                    point = pt;
+                    value = texture(planes_[k], q, a, b);
+                }
+                const int i = y * sz.width + x;
+                if (hit < 0)
+                {
+                    out.logI[i] = (float)background;
+                    out.depth[i] = 0;
+                    out.flowX[i] = out.flowY[i] = 0;
+                    continue;
+                }
+                out.logI[i] = (float)std::log(std::max(value, 1e-4));
+                out.depth[i] = (float)best;
+                // Motion of the visible point, projected: u = f X / Z + cx.
+                const SimulatedPlane& p = planes_[hit];
+                const Vec3d vel = p.velocity + p.angularVelocity.cross(point - poses[hit].c);
+                const Vec3d rel = point - origin;
+                out.flowX[i] = (float)(f * (vel[0] * rel[2] - rel[0] * vel[2]) / (rel[2] * rel[2]));
+                out.flowY[i] = (float)(f * (vel[1] * rel[2] - rel[1] * vel[2]) / (rel[2] * rel[2]));
+            }
+        }
+    }
+
+    void step()
+    {
+        const Size sz = s_.resolution;
+        double maxFlow = 0;
+        for (int c = 0; c < 2; c++)
+            for (int i = 0; i < sz.area(); i++)
+                maxFlow = std::max(maxFlow, (double)std::hypot(cur_[c].flowX[i], cur_[c].flowY[i]));
+        // Sized on the current motion; accelerations within one step are small for the rigid scenes simulated.
+        const double dt = std::max(1.0, std::min(s_.maxStepUs, maxFlow > 0 ? s_.maxPixelStep / maxFlow * 1e6 : s_.maxStepUs));
+        const double t0 = t_, t1 = t_ + dt;
+        std::vector<std::pair<Event, std::array<float, 6>>> stepEvents;
+        for (int c = 0; c < 2; c++)
+            render(c, t1, next_[c]);
+        for (int c = 0; c < 2; c++)  // after both renders: the occlusion test looks at the other camera
+            fire(c, t0, t1, stepEvents);
+        addNoise(t0, t1, stepEvents);
+        std::sort(stepEvents.begin(), stepEvents.end(), [](const std::pair<Event, std::array<float, 6>>& a,
+                                                           const std::pair<Event, std::array<float, 6>>& b) {
+            const Event& e = a.first;
+            const Event& g = b.first;
+            if (e.t != g.t) return e.t < g.t;
+            if (e.camera != g.camera) return e.camera < g.camera;
+            if (e.y != g.y) return e.y < g.y;
+            return e.x < g.x;
+        });
+        for (const auto& e : stepEvents)
+        {
+            pendingEvents_.push_back(e.first);
+            pendingTruth_.insert(pendingTruth_.end(), e.second.begin(), e.second.end());
+        }
+        for (int c = 0; c < 2; c++)
+            std::swap(cur_[c], next_[c]);
+        t_ = t1;
+    }
+
+    // Events of one camera between the renders at t0 (cur_) and t1 (next_).
+    void fire(int c, double t0, double t1, std::vector<std::pair<Event, std::array<float, 6>>>& out)
+    {
+        const Size sz = s_.resolution;
+        const Render& a = cur_[c];
+        const Render& b = next_[c];
+        for (int y = 0; y < sz.height; y++)
+        {
+            for (int x = 0; x < sz.width; x++)
+            {
+                const int i = y * sz.width + x;
+                const double l0 = a.logI[i], l1 = b.logI[i];
+                if (l0 == l1)
+                    continue;
+                float& ref = ref_[c][i];
+                const bool up = l1 > l0;
+                const double threshold = up ? cOn_[c][i] : cOff_[c][i];
+                for (;;)
+                {
+                    const double level = up ? ref + threshold : ref - threshold;
+                    if (up ? level > l1 : level < l1)
+                        break;
+                    ref = (float)level;
+                    // The crossing time, linear between the renders (the ESIM interpolation).
+                    const double frac = (level - l0) / (l1 - l0);
+                    const double te = t0 + std::min(1.0, std::max(0.0, frac)) * (t1 - t0);
+                    if (te - lastEvent_[c][i] < s_.refractoryUs)
+                        continue;  // inside the refractory period: the level is consumed, no event
+                    lastEvent_[c][i] = te;
+                    const int64 ts = std::max((int64)std::ceil(t0), (int64)std::llround(te));
+                    out.push_back(std::make_pair(Event(ts, x, y, up ? POLARITY_ON : POLARITY_OFF, c), truth(c, x, y)));
+                }
+            }
+        }
+    }
+
+    std::array<float, 6> truth(int c, int x, int y) const
+    {
+        const Size sz = s_.resolution;
+        const int i = y * sz.width + x;
+        // An edge between two surfaces belongs to the nearer one (it is that surface's contour that moves):
+        // take the ground truth from the render, before or after the crossing, that sees the nearer surface.
+        const double z0 = cur_[c].depth[i], z1 = next_[c].depth[i];
+        const bool before = z0 > 0 && (z1 <= 0 || z0 < z1);
+        const Render& r = before ? cur_[c] : next_[c];
+        const Render& other = before ? cur_[1 - c] : next_[1 - c];
+        std::array<float, 6> g = { { 0, 0, 0, 0, 0, 0 } };
+        const double z = r.depth[i];
+        if (z <= 0)
+            return g;  // the background: no geometry, no disparity
+        g[GT_DEPTH] = (float)z;
+        g[GT_DISPARITY] = (float)(s_.focalLength * s_.baseline / z);
+        // Normal flow: the flow's component along the log-intensity gradient (Sobel on the render).
+        auto L = [&](int xx, int yy) {
+            xx = std::min(std::max(xx, 0), sz.width - 1);
+            yy = std::min(std::max(yy, 0), sz.height - 1);
+            return (double)r.logI[yy * sz.width + xx];
+        };
+        const double gx = (L(x + 1, y - 1) + 2 * L(x + 1, y) + L(x + 1, y + 1)) - (L(x - 1, y - 1) + 2 * L(x - 1, y) + L(x - 1, y + 1));
+        const double gy = (L(x - 1, y + 1) + 2 * L(x, y + 1) + L(x + 1, y + 1)) - (L(x - 1, y - 1) + 2 * L(x, y - 1) + L(x + 1, y - 1));
+        const double gn = std::hypot(gx, gy);
+        double nx = 0, ny = 0;
+        if (gn > 1e-9)
+        {
+            nx = gx / gn;
+            ny = gy / gn;
+        }
+        const double along = r.flowX[i] * nx + r.flowY[i] * ny;
+        g[GT_FLOW_X] = (float)(along * nx);
+        g[GT_FLOW_Y] = (float)(along * ny);
+        g[GT_LIFETIME] = std::abs(along) > 1e-9 ? (float)(1e6 / std::abs(along)) : 0.f;
+        // Occlusion: is the same scene point the one the other camera sees at its projection?
+        const double f = s_.focalLength, cx = 0.5 * (sz.width - 1);
+        const double X = (x - cx) / f * z + (c == CAMERA_RIGHT ? s_.baseline : 0.0);
+        const double xo = c == CAMERA_LEFT ? f * (X - s_.baseline) / z + cx : f * X / z + cx;
+        const int xi = (int)std::lround(xo);
+        bool occluded = xi < 0 || xi >= sz.width;
+        if (!occluded)
+        {
+            const double zo = other.depth[y * sz.width + xi];
+            occluded = zo <= 0 || zo < z * (1 - 0.02);
+        }
+        g[GT_FLAGS] = occluded ? (float)GT_FLAG_OCCLUDED : 0.f;
+        return g;
+    }
+
+    void addNoise(double t0, double t1, std::vector<std::pair<Event, std::array<float, 6>>>& out)
+    {
+        if (!(s_.noiseRateHz > 0))
+            return;
+        const Size sz = s_.resolution;
+        const double expected = s_.noiseRateHz * (t1 - t0) * 1e-6 * sz.area();
+        for (int c = 0; c < 2; c++)
+        {
+            // Poisson count by inversion (expected counts per step are small).
+            int count = 0;
+            double p = std::exp(-expected), cdf = p, u = rng_.uniform(0.0, 1.0);
+            while (u > cdf && count < 100000)
+            {
+                count++;
+                p *= expected / count;
+                cdf += p;
+            }
+            for (int k = 0; k < count; k++)
+            {
+                const int x = rng_.uniform(0, sz.width), y = rng_.uniform(0, sz.height);
+                const int64 ts = std::max((int64)std::ceil(t0), (int64)std::llround(rng_.uniform(t0, t1)));
+                const int polarity = rng_.uniform(0, 2);
+                std::array<float, 6> g = { { 0, 0, 0, 0, 0, (float)GT_FLAG_NOISE } };
+                out.push_back(std::make_pair(Event(ts, x, y, polarity, c), g));
+            }
+        }
+    }
+
+    std::vector<SimulatedPlane> planes_;
+    SimulatorSettings s_;
+    RNG rng_;
+    std::vector<float> cOn_[2], cOff_[2], ref_[2];
+    std::vector<double> lastEvent_[2];
+    Render cur_[2], next_[2];
+    double t_ = 0, delivered_ = 0;
+    std::vector<Event> pendingEvents_;
+    std::vector<float> pendingTruth_;
+};
+
+SimulatedPlane texturedPlane(Vec3d center, Vec2d halfSize, Vec3d velocity, double cellSize, int seed)
+{
+    SimulatedPlane p;
+    p.center = center;
+    p.halfSize = halfSize;
+    p.velocity = velocity;
+    p.cellSize = cellSize;
+    p.textureSeed = seed;
+    return p;
+}
+
+std::vector<SimulatedPlane> namedScene(const String& name, SimulatorSettings& s)
+{
+    std::vector<SimulatedPlane> planes;
+    if (name == "plane")
+    {
+        // Fills the view at 1 m and slides right at 0.5 m/s: 100 px/s at f = 200 px, disparity 20 px.
+        planes.push_back(texturedPlane(Vec3d(0, 0, 1.0), Vec2d(3, 3), Vec3d(0.5, 0, 0), 0.06, 11));
+    }
+    else if (name == "two_planes")
+    {
+        planes.push_back(texturedPlane(Vec3d(0, 0, 2.0), Vec2d(5, 5), Vec3d(-0.2, 0, 0), 0.12, 21));
+        planes.push_back(texturedPlane(Vec3d(-0.6, 0, 1.0), Vec2d(0.25, 0.3), Vec3d(0.6, 0, 0), 0.05, 22));
+    }
+    else if (name == "moving_line")
+    {
+        SimulatedPlane back;
+        back.center = Vec3d(0, 0, 1.5);
+        back.halfSize = Vec2d(5, 5);
+        back.texture = TEXTURE_UNIFORM;
+        back.intensity = 0.1;
+        SimulatedPlane line = back;
+        line.center = Vec3d(-0.5, 0, 1.2);
+        line.halfSize = Vec2d(0.012, 0.35);
+        line.intensity = 0.9;
+        line.velocity = Vec3d(0.45, 0, 0);
+        planes.push_back(back);
+        planes.push_back(line);
+        s.rightThresholdScale = 1.6;
+    }
+    else if (name == "cluttered")
+    {
+        planes.push_back(texturedPlane(Vec3d(0, 0, 3.0), Vec2d(6, 6), Vec3d(0.1, 0.05, 0), 0.15, 31));
+        SimulatedPlane a = texturedPlane(Vec3d(-0.4, -0.2, 1.2), Vec2d(0.2, 0.15), Vec3d(0.3, 0.05, 0), 0.04, 32);
+        a.angularVelocity = Vec3d(0, 0, 0.8);
+        SimulatedPlane b = texturedPlane(Vec3d(0.3, 0.25, 1.8), Vec2d(0.3, 0.2), Vec3d(-0.25, 0, 0), 0.06, 33);
+        b.rotation = Vec3d(0, 0.3, 0);
+        b.angularVelocity = Vec3d(0, 0.3, 0);
+        SimulatedPlane c = texturedPlane(Vec3d(0.1, -0.4, 2.4), Vec2d(0.25, 0.1), Vec3d(0.15, 0.1, 0), 0.05, 34);
+        c.angularVelocity = Vec3d(0.2, 0, -0.5);
+        planes.push_back(a);
+        planes.push_back(b);
+        planes.push_back(c);
+        s.noiseRateHz = 0.5;
+    }
+    else
+        CV_Error_(Error::StsBadArg, ("StereoEventSimulator: unknown scene \"%s\" (plane, two_planes, moving_line, cluttered)",
+                                     name.c_str()));
+    return planes;
+}
+
+}  // namespace
+
+std::vector<String> StereoEventSimulator::sceneNames()
+{
+    return std::vector<String>{ "plane", "two_planes", "moving_line", "cluttered" };
+}
+
+Ptr<StereoEventSimulator> StereoEventSimulator::create(const String& scene, int sensorModel, int seed)
+{
+    SimulatorSettings s = SimulatorSettings::preset(sensorModel);
+    s.seed = seed;
+    const std::vector<SimulatedPlane> planes = namedScene(scene, s);
+    return makePtr<StereoEventSimulatorImpl>(planes, s);
+}
+
+Ptr<StereoEventSimulator> StereoEventSimulator::create(const std::vector<SimulatedPlane>& planes, const SimulatorSettings& settings)
+{
+    return makePtr<StereoEventSimulatorImpl>(planes, settings);
+}
+
+double writeSimulatedRecording(const Ptr<StereoEventSimulator>& simulator, const String& path, double durationUs)
+{
+    CV_Assert(!simulator.empty());
+    EventWriter writer;
+    writer.set(EVENT_WRITER_PROP_STEREO, 1);
+    writer.open(path, simulator->getSensorSize());
+    const std::string gtPath = path + ".gt.csv";
+    std::FILE* gt = std::fopen(gtPath.c_str(), "w");
+    if (!gt)
+        CV_Error_(Error::StsError, ("%s: cannot create the ground-truth file", gtPath.c_str()));
+    std::fprintf(gt, "t,x,y,p,camera,depth,disparity,flow_x,flow_y,lifetime,flags\n");
+    double written = 0;
+    const double chunk = 10000;  // 10 ms at a time: memory does not grow with the duration
+    std::vector<Event> events;
+    Mat truth;
+    for (double t = simulator->getTime() + chunk; ; t += chunk)
+    {
+        const double until = std::min(t, durationUs);
+        simulator->generate(until, events, truth);
+        writer.write(events);
+        for (size_t i = 0; i < events.size(); i++)
+        {
+            const float* g = truth.ptr<float>((int)i);
+            const Event& e = events[i];
+            std::fprintf(gt, "%lld,%d,%d,%d,%d,%.6g,%.6g,%.6g,%.6g,%.6g,%d\n", (long long)e.t, e.x, e.y, e.p, e.camera,
+                         g[GT_DEPTH], g[GT_DISPARITY], g[GT_FLOW_X], g[GT_FLOW_Y], g[GT_LIFETIME], (int)g[GT_FLAGS]);
+        }
+        written += (double)events.size();
+        if (until >= durationUs)
+            break;
+    }
+    writer.release();
+    if (std::fclose(gt) != 0)
+        CV_Error_(Error::StsError, ("%s: write failed", gtPath.c_str()));
+    return written;
+}
+
+}  // namespace event
+}  // namespace cv

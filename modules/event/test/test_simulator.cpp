@@ -1,0 +1,233 @@
+// This file is part of OpenCV project.
+// It is subject to the license terms in the LICENSE file found in the top-level directory
+// of this distribution and at http://opencv.org/license.html.
+
+#include "test_precomp.hpp"
+
+namespace opencv_test { namespace {
+
+// A bright uniform plane whose right edge sweeps over a dark uniform background: one straight vertical edge
+// moving right at f * speed / depth px/s.
+std::vector<SimulatedPlane> edgeScene(double depth, double speed)
+{
+    SimulatedPlane back;
+    back.center = Vec3d(0, 0, 2 * depth);
+    back.halfSize = Vec2d(10, 10);
+    back.texture = TEXTURE_UNIFORM;
+    back.intensity = 0.1;
+    SimulatedPlane front = back;
+    front.center = Vec3d(-1.0 - 0.25 * depth, 0, depth);  // right edge starts left of the image centre
+    front.halfSize = Vec2d(1.0, 10);
+    front.intensity = 0.9;
+    front.velocity = Vec3d(speed, 0, 0);
+    return { back, front };
+}
+
+SimulatorSettings exactSettings()
+{
+    SimulatorSettings s;
+    s.resolution = Size(96, 32);
+    s.thresholdSigma = 0;   // every pixel has the nominal threshold
+    s.refractoryUs = 0;     // count every crossing
+    return s;
+}
+
+TEST(Event_Simulator, fronto_parallel_plane_disparity_is_fB_over_Z_and_seen_shifted_in_the_right_camera)
+{
+    Ptr<StereoEventSimulator> sim = StereoEventSimulator::create("plane");
+    const SimulatorSettings& s = sim->getSettings();
+    std::vector<Event> ev;
+    Mat gt;
+    ASSERT_TRUE(sim->generate(60000, ev, gt));
+    ASSERT_GT(ev.size(), 10000u);
+    ASSERT_EQ((int)ev.size(), gt.rows);
+    const double expected = s.focalLength * s.baseline / 1.0;  // the plane is 1 m away
+    Mat counts[2] = { Mat::zeros(s.resolution, CV_32F), Mat::zeros(s.resolution, CV_32F) };
+    for (size_t i = 0; i < ev.size(); i++)
+    {
+        ASSERT_NEAR(1.0, gt.at<float>((int)i, GT_DEPTH), 1e-4) << i;
+        ASSERT_NEAR(expected, gt.at<float>((int)i, GT_DISPARITY), 1e-3) << i;
+        counts[ev[i].camera].at<float>(ev[i].y, ev[i].x) += 1;
+    }
+    // Independent of the ground-truth columns: the right camera's events are the left's shifted by the
+    // disparity. Row-wise correlation of the two event-count images peaks there.
+    int best = -1;
+    double bestScore = -1;
+    for (int d = 0; d <= 40; d++)
+    {
+        const Mat a = counts[0].colRange(d, s.resolution.width), b = counts[1].colRange(0, s.resolution.width - d);
+        Mat za, zb;
+        subtract(a, mean(a), za);
+        subtract(b, mean(b), zb);
+        const double score = za.dot(zb) / std::sqrt(za.dot(za) * zb.dot(zb));
+        if (score > bestScore)
+        {
+            bestScore = score;
+            best = d;
+        }
+    }
+    EXPECT_EQ(cvRound(expected), best);
+    EXPECT_GT(bestScore, 0.8);
+}
+
+TEST(Event_Simulator, moving_edge_lifetime_is_one_over_its_speed_and_counts_follow_contrast_over_threshold)
+{
+    const double depth = 1.0, speed = 0.4;  // 80 px/s at f = 200 px
+    const double pxPerSecond = 200 * speed / depth;
+    for (double threshold : { 0.2, 0.4 })
+    {
+        SimulatorSettings s = exactSettings();
+        s.thresholdOn = s.thresholdOff = threshold;
+        Ptr<StereoEventSimulator> sim = StereoEventSimulator::create(edgeScene(depth, speed), s);
+        std::vector<Event> ev;
+        Mat gt;
+        sim->generate(400000, ev, gt);  // the edge crosses about 32 columns
+        // Per pixel of row 16 of the left camera: count ON events and note their first time.
+        std::map<int, int> perColumn;
+        std::map<int, int64> firstTime;
+        for (size_t i = 0; i < ev.size(); i++)
+        {
+            const Event& e = ev[i];
+            if (e.camera != CAMERA_LEFT || e.y != 16)
+                continue;
+            ASSERT_EQ(POLARITY_ON, (int)e.p) << "a brightening edge gives ON events only";
+            perColumn[e.x]++;
+            if (!firstTime.count(e.x))
+                firstTime[e.x] = e.t;
+            EXPECT_NEAR(1e6 / pxPerSecond, gt.at<float>((int)i, GT_LIFETIME), 0.02 * 1e6 / pxPerSecond);
+            EXPECT_NEAR(pxPerSecond, gt.at<float>((int)i, GT_FLOW_X), 0.02 * pxPerSecond);
+            EXPECT_NEAR(0.0, gt.at<float>((int)i, GT_FLOW_Y), 0.01 * pxPerSecond);
+        }
+        ASSERT_GT(perColumn.size(), 20u);
+        // Log contrast ln(0.9 / 0.1) over the threshold: floor(2.197 / 0.2) = 10, floor(2.197 / 0.4) = 5.
+        const int expectedCount = (int)std::floor(std::log(0.9 / 0.1) / threshold);
+        for (const auto& kv : perColumn)
+            EXPECT_EQ(expectedCount, kv.second) << "column " << kv.first << ", threshold " << threshold;
+        // Measured from the events alone: consecutive columns fire 1 / v apart.
+        std::vector<double> xs, ts;
+        for (const auto& kv : firstTime)
+        {
+            xs.push_back(kv.first);
+            ts.push_back((double)kv.second);
+        }
+        const double mx = std::accumulate(xs.begin(), xs.end(), 0.0) / xs.size();
+        const double mt = std::accumulate(ts.begin(), ts.end(), 0.0) / ts.size();
+        double sxt = 0, sxx = 0;
+        for (size_t k = 0; k < xs.size(); k++)
+        {
+            sxt += (xs[k] - mx) * (ts[k] - mt);
+            sxx += (xs[k] - mx) * (xs[k] - mx);
+        }
+        EXPECT_NEAR(1e6 / pxPerSecond, sxt / sxx, 0.02 * 1e6 / pxPerSecond);
+    }
+}
+
+TEST(Event_Simulator, deterministic_per_seed_and_independent_of_chunking)
+{
+    std::vector<Event> a, b, part, c;
+    Mat ga, gb, gpart;
+    StereoEventSimulator::create("cluttered", SENSOR_DAVIS240, 5)->generate(30000, a, ga);
+    Ptr<StereoEventSimulator> chunked = StereoEventSimulator::create("cluttered", SENSOR_DAVIS240, 5);
+    for (double t = 7000; ; t += 7000)
+    {
+        chunked->generate(std::min(t, 30000.0), part, gpart);
+        b.insert(b.end(), part.begin(), part.end());
+        gb.push_back(gpart);
+        if (t >= 30000)
+            break;
+    }
+    ASSERT_EQ(a.size(), b.size());
+    ASSERT_GT(a.size(), 1000u);
+    for (size_t i = 0; i < a.size(); i++)
+        ASSERT_EQ(a[i], b[i]) << i;
+    EXPECT_EQ(0, cvtest::norm(ga, gb, NORM_INF));
+    EXPECT_EQ(-1, findTimeOrderViolation(a));
+
+    Mat gc;
+    StereoEventSimulator::create("cluttered", SENSOR_DAVIS240, 6)->generate(30000, c, gc);
+    EXPECT_NE(a.size(), c.size()) << "another seed gives other thresholds and noise";
+}
+
+TEST(Event_Simulator, background_activity_rate_and_flags)
+{
+    SimulatorSettings s = exactSettings();
+    s.noiseRateHz = 20;
+    std::vector<SimulatedPlane> still = edgeScene(1.0, 0.0);  // nothing moves: only noise
+    Ptr<StereoEventSimulator> sim = StereoEventSimulator::create(still, s);
+    std::vector<Event> ev;
+    Mat gt;
+    sim->generate(500000, ev, gt);
+    const double expected = 20 * 0.5 * s.resolution.area() * 2;  // both cameras
+    EXPECT_NEAR(expected, (double)ev.size(), 4 * std::sqrt(expected));
+    for (int i = 0; i < gt.rows; i++)
+        ASSERT_EQ(GT_FLAG_NOISE, (int)gt.at<float>(i, GT_FLAGS));
+}
+
+TEST(Event_Simulator, occlusion_flags_follow_the_geometry)
+{
+    // The "plane" scene fills the view: the leftmost disparity-wide strip of the left image has no
+    // counterpart in the right image, and nothing else is hidden.
+    Ptr<StereoEventSimulator> sim = StereoEventSimulator::create("plane");
+    std::vector<Event> ev;
+    Mat gt;
+    sim->generate(30000, ev, gt);
+    const int d = 20;
+    size_t checked = 0;
+    for (size_t i = 0; i < ev.size(); i++)
+    {
+        const bool occluded = ((int)gt.at<float>((int)i, GT_FLAGS) & GT_FLAG_OCCLUDED) != 0;
+        const Event& e = ev[i];
+        if (e.camera == CAMERA_LEFT && (e.x < d - 1 || e.x > d + 1))
+        {
+            EXPECT_EQ(e.x < d - 1, occluded) << e;
+            checked++;
+        }
+        if (e.camera == CAMERA_RIGHT && (e.x > 239 - d + 1 || e.x < 239 - d - 1))
+        {
+            EXPECT_EQ(e.x > 239 - d + 1, occluded) << e;
+        }
+    }
+    EXPECT_GT(checked, 1000u);
+}
+
+TEST(Event_Simulator, recording_round_trip_through_event_writer_and_ground_truth_file)
+{
+    Ptr<StereoEventSimulator> sim = StereoEventSimulator::create("moving_line", SENSOR_DAVIS240, 1);
+    const std::string path = cv::tempfile(".aedat4");
+    const double n = writeSimulatedRecording(sim, path, 120000);
+    ASSERT_GT(n, 1000);
+
+    Ptr<StereoEventSimulator> again = StereoEventSimulator::create("moving_line", SENSOR_DAVIS240, 1);
+    std::vector<Event> expected;
+    Mat gt;
+    again->generate(120000, expected, gt);
+    EventCapture cap(path);
+    EXPECT_EQ(1.0, cap.get(EVENT_CAP_PROP_STEREO));
+    const std::vector<Event> back = readAllEvents(cap);
+    ASSERT_EQ(expected.size(), back.size());
+    for (size_t i = 0; i < back.size(); i++)
+        ASSERT_EQ(expected[i], back[i]) << i;
+
+    std::ifstream csv((path + ".gt.csv").c_str());
+    std::string line;
+    std::getline(csv, line);
+    EXPECT_EQ("t,x,y,p,camera,depth,disparity,flow_x,flow_y,lifetime,flags", line);
+    size_t rows = 0;
+    while (std::getline(csv, line))
+    {
+        long long t;
+        int x, y, p, c, flags;
+        float depth, disparity, fx, fy, lifetime;
+        ASSERT_EQ(11, std::sscanf(line.c_str(), "%lld,%d,%d,%d,%d,%f,%f,%f,%f,%f,%d", &t, &x, &y, &p, &c, &depth,
+                                  &disparity, &fx, &fy, &lifetime, &flags)) << line;
+        ASSERT_LT(rows, expected.size());
+        EXPECT_EQ(expected[rows], Event(t, x, y, p, c));
+        EXPECT_NEAR(gt.at<float>((int)rows, GT_DISPARITY), disparity, 1e-3);
+        rows++;
+    }
+    EXPECT_EQ(expected.size(), rows);
+    std::remove(path.c_str());
+    std::remove((path + ".gt.csv").c_str());
+}
+
+}} // namespace
