@@ -7,6 +7,7 @@
 // Stereo recordings are shown left | right. A progress bar runs on stderr.
 
 #include <opencv2/event.hpp>
+#include <opencv2/core/utils/filesystem.hpp>  // after a core header: it needs CV_EXPORTS
 #include <opencv2/highgui.hpp>
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
@@ -14,7 +15,6 @@
 
 #include <cstdio>
 #include <iostream>
-#include <sys/stat.h>
 
 using namespace cv;
 using namespace cv::event;
@@ -123,7 +123,8 @@ int main(int argc, char** argv)
         const bool stereo = cap.get(EVENT_CAP_PROP_STEREO) != 0;
         const bool writePngs = o.video.empty() && !o.show;
         if (writePngs)
-            ::mkdir(o.output.c_str(), 0755);
+            if (!utils::fs::createDirectories(o.output))
+            throw std::runtime_error(o.output + ": cannot create the output folder");
 
         Ptr<EventSurface> surface[2] = { EventSurface::create(size), EventSurface::create(size) };
         VideoWriter video;

@@ -10,6 +10,7 @@
 // with its ground truth into the output folder (<scene>.aedat4 + .gt.csv) and reads that.
 
 #include <opencv2/event.hpp>
+#include <opencv2/core/utils/filesystem.hpp>  // after a core header: it needs CV_EXPORTS
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
@@ -17,7 +18,6 @@
 #include <fstream>
 #include <iostream>
 #include <map>
-#include <sys/stat.h>
 
 using namespace cv;
 using namespace cv::event;
@@ -115,7 +115,8 @@ int main(int argc, char** argv)
     {
         if (!parse(argc, argv, opt))
             return 0;
-        ::mkdir(opt.output.c_str(), 0755);
+        if (!utils::fs::createDirectories(opt.output))
+            throw std::runtime_error(opt.output + ": cannot create the output folder");
         if (opt.input.empty() && opt.left.empty())
         {
             opt.input = opt.output + "/" + opt.scene + ".aedat4";

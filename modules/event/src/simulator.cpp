@@ -258,7 +258,9 @@ private:
             for (int i = 0; i < sz.area(); i++)
                 maxFlow = std::max(maxFlow, (double)std::hypot(cur_[c].flowX[i], cur_[c].flowY[i]));
         // Sized on the current motion; accelerations within one step are small for the rigid scenes simulated.
-        const double dt = std::max(1.0, std::min(s_.maxStepUs, maxFlow > 0 ? s_.maxPixelStep / maxFlow * 1e6 : s_.maxStepUs));
+        // Whole microseconds: each step then owns the integer timestamps [t0, t1), so sorting a step's events
+        // by (t, camera, y, x) orders the whole stream that way (left first on equal times).
+        const double dt = std::max(1.0, std::floor(std::min(s_.maxStepUs, maxFlow > 0 ? s_.maxPixelStep / maxFlow * 1e6 : s_.maxStepUs)));
         const double t0 = t_, t1 = t_ + dt;
         std::vector<std::pair<Event, std::array<float, 6>>> stepEvents;
         for (int c = 0; c < 2; c++)
@@ -314,7 +316,7 @@ private:
                     if (te - lastEvent_[c][i] < s_.refractoryUs)
                         continue;  // inside the refractory period: the level is consumed, no event
                     lastEvent_[c][i] = te;
-                    const int64 ts = std::max((int64)std::ceil(t0), (int64)std::llround(te));
+                    const int64 ts = std::min((int64)t1 - 1, std::max((int64)t0, (int64)std::floor(te)));
                     out.push_back(std::make_pair(Event(ts, x, y, up ? POLARITY_ON : POLARITY_OFF, c), truth(c, x, y)));
                 }
             }
@@ -391,7 +393,7 @@ private:
             for (int k = 0; k < count; k++)
             {
                 const int x = rng_.uniform(0, sz.width), y = rng_.uniform(0, sz.height);
-                const int64 ts = std::max((int64)std::ceil(t0), (int64)std::llround(rng_.uniform(t0, t1)));
+                const int64 ts = std::min((int64)t1 - 1, (int64)std::floor(rng_.uniform(t0, t1)));
                 const int polarity = rng_.uniform(0, 2);
                 std::array<float, 6> g = { { 0, 0, 0, 0, 0, (float)GT_FLAG_NOISE } };
                 out.push_back(std::make_pair(Event(ts, x, y, polarity, c), g));
