@@ -10,6 +10,7 @@
 #include "opencv2/event/event_capture.hpp"
 #include "opencv2/event/event_writer.hpp"
 #include "opencv2/event/simulator.hpp"
+#include "opencv2/event/lifetime_estimator.hpp"
 
 /** @defgroup event Event cameras: lifetime and stereo disparity
 
@@ -27,6 +28,7 @@ through the usual InputArray / OutputArray (see event::Event for the layout and 
     @defgroup event_surface Surface of active events, time surfaces and event frames
     @defgroup event_io Reading recordings and cameras
     @defgroup event_simulator Stereo event simulator with ground truth
+    @defgroup event_lifetime Event lifetime and normal flow
 @}
 */
 

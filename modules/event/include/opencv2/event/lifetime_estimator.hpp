@@ -1,0 +1,109 @@
+// This file is part of OpenCV project.
+// It is subject to the license terms in the LICENSE file found in the top-level directory
+// of this distribution and at http://opencv.org/license.html.
+
+#ifndef OPENCV_EVENT_LIFETIME_ESTIMATOR_HPP
+#define OPENCV_EVENT_LIFETIME_ESTIMATOR_HPP
+
+#include "opencv2/event/types.hpp"
+
+namespace cv {
+namespace event {
+
+//! @addtogroup event_lifetime
+//! @{
+
+/** @brief How an event's lifetime was obtained (LifetimeEstimator status output). */
+enum LifetimeStatus
+{
+    LIFETIME_NOISE = 0,      //!< no local plane: the event is classified as noise, lifetime 0
+    LIFETIME_FITTED = 1,     //!< RANSAC plane fit + regularised least-squares refit
+    LIFETIME_PREDICTED = 2,  //!< arrived when the previous plane predicted: its plane was reused (no fit)
+    LIFETIME_MATCHED = 3     //!< given by a stereo match (StereoEventMatcher, coupled mode)
+};
+
+/** @brief Per-event lifetime and normal flow by local plane fitting on the Surface of Active Events
+(Mueggler et al. @cite Mueggler2015, with the prediction shortcut of Hadviger et al. @cite Hadviger2019).
+
+For each event, the past events of its polarity in an N x N window no older than dt are taken in local
+coordinates (x, y relative to the event, t relative to the event in ms). RANSAC hypotheses are planes
+t = a x + b y through the current event and two random past events (degenerate pairs are skipped); inliers
+lie within the inlier threshold of the plane in time; the best hypothesis is accepted with at least
+minInliers inliers, and refitted by least squares on its inliers (t = a x + b y + c), regularised toward
+the plane predicted for this pixel when there is one. No accepted plane within the iteration cap: noise.
+
+From the plane, g = (a, b) ms/px is the time-surface gradient: lifetime = |g| (the time the edge needs to
+move one pixel, sqrt(n1^2 + n2^2) / n3 for the plane normal n) and normal flow v = g / |g|^2 px/ms.
+The estimator then predicts when the edge reaches the neighbour pixel it moves to (8-neighbourhood, by the
+flow direction) and stores the plane there; an event arriving there within the prediction tolerance reuses
+that plane without any fit (the shortcut), unless prediction is disabled.
+
+Fitting in local coordinates makes the thresholds independent of how long the recording has run (the public
+MATLAB reference fits in absolute microseconds; its threshold drifts with time).
+Memory: per pixel and polarity, the last timestamp and a predicted plane: O(sensor pixels).
+*/
+class CV_EXPORTS_W LifetimeEstimator : public Algorithm
+{
+public:
+    CV_WRAP static Ptr<LifetimeEstimator> create(Size sensorSize = Size(240, 180));
+
+    /** @brief Estimates the lifetime of each event of a time-ordered packet.
+    @param events the packet (any form getEventMat() accepts); all events go into one surface per polarity
+    (use one estimator per camera).
+    @param lifetimes output N x 1 CV_32F, microseconds; 0 for noise.
+    @param flow output N x 2 CV_32F normal optical flow (vx, vy) [px/s]; 0 for noise.
+    @param status output N x 1 CV_8U LifetimeStatus. */
+    CV_WRAP virtual void process(InputArray events, OutputArray lifetimes, OutputArray flow = noArray(),
+                                 OutputArray status = noArray()) = 0;
+
+    /** @brief The same for one event (the incremental API; identical results to process()).
+    @return the lifetime [us], 0 for noise. */
+    virtual float processEvent(const Event& event, Vec2f& flow, int& status) = 0;
+
+    /** @brief Image of the events alive at time @p t: an event lives from its timestamp to timestamp +
+    lifetime; one per pixel (the latest). CV_8U, 255 = alive ON, 128 = alive OFF, 0 = nothing. */
+    CV_WRAP virtual void renderActiveEvents(double t, OutputArray image) const = 0;
+
+    /** @brief Forgets every event and prediction. */
+    CV_WRAP virtual void reset() = 0;
+
+    /** @brief Counts since the last reset, per LifetimeStatus (0..3). */
+    CV_WRAP virtual double getStatusCount(int status) const = 0;
+
+    CV_WRAP virtual Size getSensorSize() const = 0;
+    CV_WRAP virtual void setSensorSize(Size size) = 0;
+    /** @brief Neighbourhood size N (odd, >= 3; default 5). */
+    CV_WRAP virtual int getWindowSize() const = 0;
+    CV_WRAP virtual void setWindowSize(int n) = 0;
+    /** @brief Oldest past event used [us] (default 100000, the paper's 100 ms). */
+    CV_WRAP virtual double getTimeWindow() const = 0;
+    CV_WRAP virtual void setTimeWindow(double us) = 0;
+    /** @brief RANSAC inlier threshold: distance to the plane in time [ms] (default 2). */
+    CV_WRAP virtual double getInlierThreshold() const = 0;
+    CV_WRAP virtual void setInlierThreshold(double ms) = 0;
+    /** @brief Inliers (the current event included) needed to accept a plane (default 5). */
+    CV_WRAP virtual int getMinInliers() const = 0;
+    CV_WRAP virtual void setMinInliers(int n) = 0;
+    /** @brief RANSAC iteration cap (default 19, the MATLAB reference's count for 40 % outliers at 99 %). */
+    CV_WRAP virtual int getMaxIterations() const = 0;
+    CV_WRAP virtual void setMaxIterations(int n) = 0;
+    /** @brief Weight of the pull of the refit toward the predicted plane [ms^2 per (ms/px)^2] (default 1). */
+    CV_WRAP virtual double getRegularization() const = 0;
+    CV_WRAP virtual void setRegularization(double lambda) = 0;
+    /** @brief An event within this of its predicted time reuses the predicted plane [us] (default 1000). */
+    CV_WRAP virtual double getPredictionTolerance() const = 0;
+    CV_WRAP virtual void setPredictionTolerance(double us) = 0;
+    /** @brief Enables the prediction shortcut (default true). */
+    CV_WRAP virtual bool getUsePrediction() const = 0;
+    CV_WRAP virtual void setUsePrediction(bool use) = 0;
+    /** @brief Seed of the RANSAC sampling (default 0): results are deterministic. */
+    CV_WRAP virtual int getSeed() const = 0;
+    CV_WRAP virtual void setSeed(int seed) = 0;
+};
+
+//! @}
+
+}  // namespace event
+}  // namespace cv
+
+#endif  // OPENCV_EVENT_LIFETIME_ESTIMATOR_HPP
