@@ -1,13 +1,14 @@
 // event_evaluate: runs a stereo method on a recording with per-event ground truth and writes a report.
 //
 //   event_evaluate [--scene NAME --duration-ms MS | --input REC [--gt REC.gt.csv]] [--method sgbm]
-//                  [--window-ms 33] [--output DIR]
+//                  [--window-ms 33] [--output DIR]       methods: sgbm, lifetime
 //
 // Ground truth comes from the simulator (a named scene, simulated in memory) or from the side file that
 // writeSimulatedRecording() writes (`t,x,y,p,camera,depth,disparity,flow_x,flow_y,lifetime,flags`).
 // Methods: `sgbm` = what users do today (dv-processing's semi-dense matcher): accumulate each camera's events
 // of a window into an edge frame, run cv::StereoSGBM, give every event its pixel's disparity. The paper's
-// methods join as the stereo matcher lands.
+// methods join as the stereo matcher lands. `lifetime` = LifetimeEstimator per camera (lifetime and noise
+// metrics, no disparity).
 //
 // Writes DIR/report.md and DIR/metrics.csv (disparity density, share within 1 px, mean absolute disparity
 // error, relative depth error, lifetime median relative error, noise precision / recall, events with a
@@ -78,8 +79,23 @@ struct EvaluationTotals
     std::vector<double> lifetimeRelErrors;
 };
 
+// What a method says about each event of a window: disparity (-1: none), lifetime [us] (0: noise), and
+// which of the two it estimates at all.
+struct MethodOutput
+{
+    std::vector<float> disparity, lifetime;
+    bool hasDisparity = false, hasLifetime = false;
+};
+
+class Method
+{
+public:
+    virtual ~Method() {}
+    virtual void process(const std::vector<Event>& window, MethodOutput& out) = 0;
+};
+
 // FRAME_SGBM: per window, edge frames -> StereoSGBM (dv-processing's defaults) -> disparity per event.
-class FrameSgbm
+class FrameSgbm CV_FINAL : public Method
 {
 public:
     explicit FrameSgbm(Size size) : size_(size)
@@ -87,8 +103,7 @@ public:
         sgbm_ = StereoSGBM::create(0, 48, 11, 8 * 121, 32 * 121, 0, 0, 15, 240, 1, StereoSGBM::MODE_SGBM_3WAY);
     }
 
-    // Disparity of each event of the window (-1: none).
-    void process(const std::vector<Event>& window, std::vector<float>& disparity)
+    void process(const std::vector<Event>& window, MethodOutput& out) CV_OVERRIDE
     {
         Mat frame[2] = { Mat::zeros(size_, CV_8U), Mat::zeros(size_, CV_8U) };
         for (const Event& e : window)
@@ -100,18 +115,41 @@ public:
         flip(frame[0], lf, 1);
         sgbm_->compute(rf, lf, drf);
         flip(drf, dr, 1);
-        disparity.resize(window.size());
+        out.hasDisparity = true;
+        out.disparity.resize(window.size());
         for (size_t i = 0; i < window.size(); i++)
         {
             const Event& e = window[i];
             const short d = (e.camera == CAMERA_LEFT ? dl : dr).at<short>(e.y, e.x);
-            disparity[i] = d > 0 ? d / 16.f : -1.f;
+            out.disparity[i] = d > 0 ? d / 16.f : -1.f;
         }
     }
 
 private:
     Size size_;
     Ptr<StereoSGBM> sgbm_;
+};
+
+// Lifetime per camera (LifetimeEstimator, plane fitting); no disparity.
+class Lifetime CV_FINAL : public Method
+{
+public:
+    explicit Lifetime(Size size) : est_{ LifetimeEstimator::create(size), LifetimeEstimator::create(size) } {}
+
+    void process(const std::vector<Event>& window, MethodOutput& out) CV_OVERRIDE
+    {
+        out.hasLifetime = true;
+        out.lifetime.resize(window.size());
+        for (size_t i = 0; i < window.size(); i++)
+        {
+            Vec2f flow;
+            int status;
+            out.lifetime[i] = est_[window[i].camera]->processEvent(window[i], flow, status);
+        }
+    }
+
+private:
+    Ptr<LifetimeEstimator> est_[2];
 };
 
 Mat colourDisparity(const Mat& d, float maxDisparity)
@@ -164,12 +202,12 @@ int main(int argc, char** argv)
             else
             {
                 std::cerr << "usage: event_evaluate [--scene NAME --duration-ms MS | --input REC [--gt REC.gt.csv]]\n"
-                             "       [--method sgbm] [--window-ms MS] [--output DIR]\n";
+                             "       [--method sgbm|lifetime] [--window-ms MS] [--output DIR]\n";
                 return a == "-h" || a == "--help" ? 0 : 2;
             }
         }
-        if (o.method != "sgbm")
-            throw std::runtime_error("--method " + o.method + ": available methods: sgbm");
+        if (o.method != "sgbm" && o.method != "lifetime")
+            throw std::runtime_error("--method " + o.method + ": available methods: sgbm, lifetime");
         if (!utils::fs::createDirectories(o.output))
             throw std::runtime_error(o.output + ": cannot create the output folder");
 
@@ -190,11 +228,15 @@ int main(int argc, char** argv)
             size = cap.getSensorSize();
             truthFile.reset(new TruthSource(o.gt.empty() ? o.input + ".gt.csv" : o.gt));
         }
-        FrameSgbm method(size);
+        std::unique_ptr<Method> method;
+        if (o.method == "sgbm")
+            method.reset(new FrameSgbm(size));
+        else
+            method.reset(new Lifetime(size));
+        MethodOutput estimate;
         EvaluationTotals acc;
         std::vector<Event> window;
         std::vector<std::array<float, 6>> truth;
-        std::vector<float> estimate;
         Mat lastEstimate, lastTruth;
         double seconds = 0;
         double t = 0;
@@ -221,7 +263,7 @@ int main(int argc, char** argv)
                     truth.push_back(truthFile->next(e));
             }
             const auto t0 = std::chrono::steady_clock::now();
-            method.process(window, estimate);
+            method->process(window, estimate);
             seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 
             lastEstimate = Mat::zeros(size, CV_32F);
@@ -233,6 +275,18 @@ int main(int argc, char** argv)
                 acc.events++;
                 const bool isNoise = (flags & GT_FLAG_NOISE) != 0;
                 acc.noiseTrue += isNoise;
+                if (estimate.hasLifetime)
+                {
+                    const bool flagged = estimate.lifetime[i] <= 0;  // no lifetime = classified as noise
+                    acc.noiseFlagged += flagged;
+                    acc.noiseCorrect += flagged && isNoise;
+                    if (!isNoise && !flagged)
+                    {
+                        acc.withLifetime++;
+                        if (g[GT_LIFETIME] > 0)
+                            acc.lifetimeRelErrors.push_back(std::abs(estimate.lifetime[i] - g[GT_LIFETIME]) / g[GT_LIFETIME]);
+                    }
+                }
                 if (isNoise)
                     continue;
                 acc.signal++;
@@ -241,17 +295,18 @@ int main(int argc, char** argv)
                 acc.candidates++;
                 if (window[i].camera == CAMERA_LEFT)
                     lastTruth.at<float>(window[i].y, window[i].x) = g[GT_DISPARITY];
-                if (estimate[i] <= 0)
+                if (!estimate.hasDisparity || estimate.disparity[i] <= 0)
                     continue;
+                const float d = estimate.disparity[i];
                 acc.estimated++;
-                const double err = std::abs(estimate[i] - g[GT_DISPARITY]);
+                const double err = std::abs(d - g[GT_DISPARITY]);
                 acc.within1 += err <= 1.0;
                 acc.absError += err;
                 acc.errorHistogram[std::min<size_t>(acc.errorHistogram.size() - 1, (size_t)(err / 0.25))]++;
                 // Depth = f B / disparity, so |Z_est - Z| / Z = |d_true / d_est - 1| whatever f and B are.
-                acc.relDepthError += std::abs(g[GT_DISPARITY] / estimate[i] - 1.0);
+                acc.relDepthError += std::abs(g[GT_DISPARITY] / d - 1.0);
                 if (window[i].camera == CAMERA_LEFT)
-                    lastEstimate.at<float>(window[i].y, window[i].x) = estimate[i];
+                    lastEstimate.at<float>(window[i].y, window[i].x) = d;
             }
         }
 
@@ -262,6 +317,18 @@ int main(int argc, char** argv)
         const double mae = acc.estimated ? acc.absError / (double)acc.estimated : 0;
         const double relDepth = acc.estimated ? 100.0 * acc.relDepthError / (double)acc.estimated : 0;
         const double usPerEvent = acc.events ? seconds * 1e6 / (double)acc.events : 0;
+        std::string lifetimeError = "n/a", precision = "n/a", recall = "n/a";
+        if (estimate.hasLifetime)
+        {
+            if (!acc.lifetimeRelErrors.empty())
+            {
+                std::vector<double>& r = acc.lifetimeRelErrors;
+                std::nth_element(r.begin(), r.begin() + r.size() / 2, r.end());
+                lifetimeError = std::to_string(100.0 * r[r.size() / 2]);
+            }
+            precision = acc.noiseFlagged ? std::to_string(share(acc.noiseCorrect, acc.noiseFlagged)) : "n/a";
+            recall = acc.noiseTrue ? std::to_string(share(acc.noiseCorrect, acc.noiseTrue)) : "n/a (no noise)";
+        }
         std::ofstream csv(o.output + "/metrics.csv");
         csv << "metric,value\n"
             << "events," << acc.events << "\n"
@@ -272,9 +339,9 @@ int main(int argc, char** argv)
             << "within_1px_percent," << within1 << "\n"
             << "mean_abs_disparity_error_px," << mae << "\n"
             << "relative_depth_error_percent," << relDepth << "\n"
-            << "lifetime_median_relative_error_percent,n/a\n"
-            << "noise_precision_percent,n/a\n"
-            << "noise_recall_percent,n/a\n"
+            << "lifetime_median_relative_error_percent," << lifetimeError << "\n"
+            << "noise_precision_percent," << precision << "\n"
+            << "noise_recall_percent," << recall << "\n"
             << "events_with_lifetime," << acc.withLifetime << "\n"
             << "time_per_event_us," << usPerEvent << "\n";
         std::ofstream md(o.output + "/report.md");
@@ -287,8 +354,8 @@ int main(int argc, char** argv)
            << "| estimated events within 1 px | " << within1 << " % |\n"
            << "| mean absolute disparity error | " << mae << " px |\n"
            << "| mean relative depth error | " << relDepth << " % |\n"
-           << "| lifetime median relative error | n/a (" << o.method << " estimates no lifetimes) |\n"
-           << "| noise precision / recall | n/a (" << o.method << " does not classify noise) |\n"
+           << "| lifetime median relative error | " << lifetimeError << (estimate.hasLifetime ? " %" : " (" + o.method + " estimates no lifetimes)") << " |\n"
+           << "| noise precision / recall | " << precision << " / " << recall << (estimate.hasLifetime ? " %" : " (" + o.method + " does not classify noise)") << " |\n"
            << "| events with a lifetime | " << acc.withLifetime << " |\n"
            << "| time per event | " << usPerEvent << " us |\n\n"
            << "![error histogram](disparity_error_histogram.png)\n\n"
