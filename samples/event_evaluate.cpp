@@ -161,19 +161,21 @@ Mat colourDisparity(const Mat& d, float maxDisparity)
     return colour;
 }
 
-void drawHistogram(const std::vector<int>& h, const std::string& path, const std::string& title)
+// Bars with the first and last bin labelled "0" and the range end.
+void drawHistogram(const std::vector<int>& h, const std::string& path, const std::string& title,
+                   const std::string& endLabel = "10 px")
 {
     const int w = 20 * (int)h.size(), height = 300;
-    Mat img(height + 40, w + 20, CV_8UC3, Scalar::all(255));
+    Mat img(height + 70, w + 20, CV_8UC3, Scalar::all(255));  // title above the bars, labels below
     const int peak = std::max(1, *std::max_element(h.begin(), h.end()));
     for (size_t k = 0; k < h.size(); k++)
     {
         const int bar = (int)std::lround((double)h[k] / peak * height);
-        rectangle(img, Point(10 + 20 * (int)k, height + 10 - bar), Point(10 + 20 * (int)k + 17, height + 10), Scalar(180, 90, 30), FILLED);
+        rectangle(img, Point(10 + 20 * (int)k, height + 40 - bar), Point(10 + 20 * (int)k + 17, height + 40), Scalar(180, 90, 30), FILLED);
     }
     putText(img, title, Point(10, 25), FONT_HERSHEY_SIMPLEX, 0.5, Scalar(0, 0, 0), 1);
-    putText(img, "0 px", Point(10, height + 30), FONT_HERSHEY_SIMPLEX, 0.4, Scalar(0, 0, 0), 1);
-    putText(img, "10 px", Point(w - 30, height + 30), FONT_HERSHEY_SIMPLEX, 0.4, Scalar(0, 0, 0), 1);
+    putText(img, "0", Point(10, height + 60), FONT_HERSHEY_SIMPLEX, 0.4, Scalar(0, 0, 0), 1);
+    putText(img, endLabel, Point(w - 30, height + 60), FONT_HERSHEY_SIMPLEX, 0.4, Scalar(0, 0, 0), 1);
     imwrite(path, img);
 }
 
@@ -362,6 +364,15 @@ int main(int argc, char** argv)
            << "![estimate | ground truth](disparity_vs_truth.png)\n";
         drawHistogram(acc.errorHistogram, o.output + "/disparity_error_histogram.png",
                       "|disparity error| histogram, 0.25 px bins (" + o.method + ")");
+        if (estimate.hasLifetime)
+        {
+            std::vector<int> h(41, 0);  // relative lifetime error in 2.5 % bins up to 100 %
+            for (double r : acc.lifetimeRelErrors)
+                h[std::min<size_t>(h.size() - 1, (size_t)(r / 0.025))]++;
+            drawHistogram(h, o.output + "/lifetime_error_histogram.png",
+                          "|lifetime error| / true lifetime, 2.5 % bins, last bin >= 100 % (" + o.method + ")", "100 %");
+            md << "\n![lifetime error histogram](lifetime_error_histogram.png)\n";
+        }
         const float maxDisparity = 48;
         Mat pair;
         hconcat(colourDisparity(lastEstimate, maxDisparity), colourDisparity(lastTruth, maxDisparity), pair);
