@@ -9,6 +9,7 @@
 #include "aedat4_codec.hpp"
 
 #include <cerrno>
+#include <charconv>
 #include <cstdio>
 
 namespace cv {
@@ -202,10 +203,22 @@ public:
 
     void writeLine(const Event& e)
     {
+        // std::to_chars: no locale, no format parsing; several times faster than snprintf on this hot path.
         char buf[80];
-        const int n = stereo ? std::snprintf(buf, sizeof(buf), "%lld %d %d %d %d\n", (long long)e.t, e.x, e.y, e.p, e.camera)
-                             : std::snprintf(buf, sizeof(buf), "%lld %d %d %d\n", (long long)e.t, e.x, e.y, e.p);
-        output(buf, (size_t)n);
+        char* p = std::to_chars(buf, buf + 24, (long long)e.t).ptr;
+        *p++ = ' ';
+        p = std::to_chars(p, p + 8, (int)e.x).ptr;
+        *p++ = ' ';
+        p = std::to_chars(p, p + 8, (int)e.y).ptr;
+        *p++ = ' ';
+        *p++ = (char)('0' + e.p);
+        if (stereo)
+        {
+            *p++ = ' ';
+            *p++ = (char)('0' + e.camera);
+        }
+        *p++ = '\n';
+        output(buf, (size_t)(p - buf));
     }
 
     void flushPacket(int stream)

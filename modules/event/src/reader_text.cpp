@@ -131,28 +131,104 @@ private:
         return end && *end == '\0' && !s.empty();
     }
 
+    // One column: exact integers and decimals without strtod on the common path (the reader's hot loop);
+    // exponents and very long numbers fall back to strtod.
+    struct Number
+    {
+        bool integral = true;  // no fraction and no exponent: `whole` is exact
+        int64 whole = 0;       // integer part (signed)
+        int64 frac = 0;        // fraction digits as an integer ...
+        int fracDigits = 0;    // ... and their count
+        double value = 0;
+    };
+
+    static const char* scanNumber(const char* p, Number& n)
+    {
+        const char* start = p;
+        bool negative = false;
+        if (*p == '-' || *p == '+')
+            negative = *p++ == '-';
+        int digits = 0;
+        int64 whole = 0;
+        while (*p >= '0' && *p <= '9' && digits < 18)
+        {
+            whole = whole * 10 + (*p++ - '0');
+            digits++;
+        }
+        int64 frac = 0;
+        int fracDigits = 0;
+        if (*p == '.')
+        {
+            p++;
+            while (*p >= '0' && *p <= '9' && fracDigits < 18)
+            {
+                frac = frac * 10 + (*p++ - '0');
+                fracDigits++;
+            }
+        }
+        if ((digits == 0 && fracDigits == 0) || (*p >= '0' && *p <= '9') || *p == 'e' || *p == 'E')
+        {
+            // Exponent, or more digits than the fast path keeps: let strtod decide.
+            char* end = nullptr;
+            n.value = std::strtod(start, &end);
+            n.integral = false;
+            n.fracDigits = -1;  // no exact decimal form
+            return end == start ? start : end;
+        }
+        n.integral = fracDigits == 0 && p[-1] != '.';
+        n.whole = negative ? -whole : whole;
+        n.frac = negative ? -frac : frac;
+        n.fracDigits = fracDigits;
+        double f = (double)frac;
+        for (int k = 0; k < fracDigits; k++)
+            f *= 0.1;
+        n.value = (double)whole + f;
+        if (negative)
+            n.value = -n.value;
+        return p;
+    }
+
+    // A time column value to microseconds: exact decimal arithmetic when the number has a plain decimal form.
+    int64 toMicroseconds(const Number& n) const
+    {
+        if (n.integral && timeScale_ == 1.0)
+            return n.whole;
+        if (n.fracDigits >= 0 && timeScale_ == 1e6 && n.fracDigits <= 12)
+        {
+            // seconds.fraction: whole * 10^6 + fraction scaled to 6 digits, rounded half away from zero.
+            int64 scaled;
+            if (n.fracDigits <= 6)
+            {
+                scaled = n.frac;
+                for (int k = n.fracDigits; k < 6; k++)
+                    scaled *= 10;
+            }
+            else
+            {
+                int64 div = 1;
+                for (int k = 6; k < n.fracDigits; k++)
+                    div *= 10;
+                scaled = (n.frac + (n.frac >= 0 ? div / 2 : -div / 2)) / div;
+            }
+            return n.whole * 1000000 + scaled;
+        }
+        return (int64)std::llround(n.value * timeScale_);
+    }
+
     Event parse()
     {
         // Parse the columns in place: no allocation per line.
-        double values[16];
+        Number values[16];
         const int want = std::min(columns_, 16);
         const char* p = line_.c_str();
         int n = 0;
-        int64 tInteger = 0;
         while (n < want)
         {
             while (*p && isSeparator(*p))
                 p++;
             if (!*p)
                 break;
-            char* end = nullptr;
-            if (n == opt_.textColumnT && integerTime_)
-            {
-                tInteger = std::strtoll(p, &end, 10);
-                values[n] = (double)tInteger;
-            }
-            else
-                values[n] = std::strtod(p, &end);
+            const char* end = scanNumber(p, values[n]);
             if (end == p || (*end && !isSeparator(*end)))
                 formatError(in_.path(), lineOffset_, format("line %d: column %d is not a number: \"%s\"",
                                                             lineNumber_, n + 1, line_.c_str()));
@@ -162,17 +238,22 @@ private:
         if (n < want)
             formatError(in_.path(), lineOffset_, format("line %d: %d columns, expected %d: \"%s\"", lineNumber_, n,
                                                         columns_, line_.c_str()));
-        const int64 t = integerTime_ ? tInteger : (int64)std::llround(values[opt_.textColumnT] * timeScale_);
+        const Number& tn = values[opt_.textColumnT];
+        if (integerTime_ && !tn.integral)
+            formatError(in_.path(), lineOffset_, format("line %d: timestamp \"%s\" is not an integer number of "
+                                                        "microseconds, as the first line's was", lineNumber_, line_.c_str()));
+        const int64 t = toMicroseconds(tn);
         const int base = opt_.textOneBased ? 1 : 0;
-        const double x = values[opt_.textColumnX] - base, y = values[opt_.textColumnY] - base;
-        if (!(std::abs(x) < 32768 && std::abs(y) < 32768) || x != std::floor(x) || y != std::floor(y))
+        const Number& xn = values[opt_.textColumnX];
+        const Number& yn = values[opt_.textColumnY];
+        const double x = xn.value - base, y = yn.value - base;
+        if (!xn.integral || !yn.integral || !(std::abs(x) < 32768 && std::abs(y) < 32768))
             formatError(in_.path(), lineOffset_, format("line %d: coordinates (%g, %g) are not pixel indices",
-                                                        lineNumber_, values[opt_.textColumnX],
-                                                        values[opt_.textColumnY]));
+                                                        lineNumber_, xn.value, yn.value));
         int camera = CAMERA_LEFT;
         if (camera_ >= 0)
         {
-            const int c = (int)values[camera_];
+            const int c = (int)values[camera_].value;
             const int other = opt_.textLeftCameraValue == 0 ? 1 : 0;
             if (c == opt_.textLeftCameraValue)
                 camera = CAMERA_LEFT;
@@ -182,7 +263,7 @@ private:
                 formatError(in_.path(), lineOffset_, format("line %d: camera value %d; expected %d (left) or %d (right)",
                                                             lineNumber_, c, opt_.textLeftCameraValue, other));
         }
-        return Event(t, (int)x, (int)y, values[opt_.textColumnP] > 0 ? POLARITY_ON : POLARITY_OFF, camera);
+        return Event(t, (int)x, (int)y, values[opt_.textColumnP].value > 0 ? POLARITY_ON : POLARITY_OFF, camera);
     }
 
     FileInput in_;

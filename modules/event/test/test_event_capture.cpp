@@ -58,6 +58,20 @@ TEST(Event_Capture_Text, rpg_seconds_with_comments_in_time_windows)
     std::remove(path.c_str());
 }
 
+TEST(Event_Capture_Text, seconds_convert_to_microseconds_exactly)
+{
+    // Decimal seconds are converted digit by digit (no binary floating-point rounding); exponents work too.
+    const std::string path = writeTempFile("0.123456789 1 1 1\n2.5e-1 3 1 1\n1.0000005 2 1 0\n86400.000001 4 1 0\n", ".txt");
+    EventCapture cap(path);
+    const std::vector<Event> ev = readAllEvents(cap);
+    ASSERT_EQ(4u, ev.size());
+    EXPECT_EQ(123457, ev[0].t);       // 123456.789 us rounds up
+    EXPECT_EQ(250000, ev[1].t);
+    EXPECT_EQ(1000001, ev[2].t);      // 1000000.5 us: half away from zero
+    EXPECT_EQ(86400000001LL, ev[3].t);
+    std::remove(path.c_str());
+}
+
 TEST(Event_Capture_Text, stereo_camera_column_one_based_and_batches)
 {
     // TUM layout: t_us x y p retina, retina 1 = left; 1-based coordinates as an option.
