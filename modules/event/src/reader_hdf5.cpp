@@ -28,35 +28,19 @@ class Hdf5Reader CV_FINAL : public EventReader
 public:
     Hdf5Reader(const String& path, const ReaderOptions& options) : path_(path)
     {
-        H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);  // errors are reported as cv::Exception, not printed
-        file_ = H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
-        if (file_ < 0)
-            CV_Error_(Error::StsError, ("%s: cannot open as HDF5", path.c_str()));
-        const bool have[2] = { exists(kDatasets[0]), exists(kDatasets[1]) };
-        if (!have[0] && !have[1])
-            fail("no /davis/left/events or /davis/right/events dataset (MVSEC layout)");
-        stereo_ = options.cameraFilter < 0 && have[0] && have[1];
-        const int pick = options.cameraFilter >= 0 ? options.cameraFilter : (have[0] ? 0 : 1);
-        if (!have[pick])
-            fail(std::string("no ") + kDatasets[pick] + " dataset");
-        dataset_ = H5Dopen2(file_, kDatasets[pick], H5P_DEFAULT);
-        space_ = H5Dget_space(dataset_);
-        hsize_t dims[2] = { 0, 0 };
-        if (dataset_ < 0 || space_ < 0 || H5Sget_simple_extent_ndims(space_) != 2)
-            fail(std::string(kDatasets[pick]) + " is not a 2-D dataset");
-        H5Sget_simple_extent_dims(space_, dims, nullptr);
-        if (dims[1] != 4)
-            fail(format("%s has %llu columns; MVSEC events have 4 (x, y, t, p)", kDatasets[pick], (unsigned long long)dims[1]));
-        rows_ = (int64)dims[0];
-        size_ = options.sensorSize.empty() ? Size(346, 260) : options.sensorSize;  // MVSEC: DAVIS346
+        // The destructor does not run when a constructor throws: release the HDF5 handles on the way out.
+        try
+        {
+            init(options);
+        }
+        catch (...)
+        {
+            closeHandles();
+            throw;
+        }
     }
 
-    ~Hdf5Reader() CV_OVERRIDE
-    {
-        if (space_ >= 0) H5Sclose(space_);
-        if (dataset_ >= 0) H5Dclose(dataset_);
-        if (file_ >= 0) H5Fclose(file_);
-    }
+    ~Hdf5Reader() CV_OVERRIDE { closeHandles(); }
 
     String name() const CV_OVERRIDE { return "HDF5_MVSEC"; }
     Size sensorSize() const CV_OVERRIDE { return size_; }
@@ -89,6 +73,39 @@ public:
     }
 
 private:
+    void init(const ReaderOptions& options)
+    {
+        H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);  // errors are reported as cv::Exception, not printed
+        file_ = H5Fopen(path_.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+        if (file_ < 0)
+            CV_Error_(Error::StsError, ("%s: cannot open as HDF5", path_.c_str()));
+        const bool have[2] = { exists(kDatasets[0]), exists(kDatasets[1]) };
+        if (!have[0] && !have[1])
+            fail("no /davis/left/events or /davis/right/events dataset (MVSEC layout)");
+        stereo_ = options.cameraFilter < 0 && have[0] && have[1];
+        const int pick = options.cameraFilter >= 0 ? options.cameraFilter : (have[0] ? 0 : 1);
+        if (!have[pick])
+            fail(std::string("no ") + kDatasets[pick] + " dataset");
+        dataset_ = H5Dopen2(file_, kDatasets[pick], H5P_DEFAULT);
+        space_ = H5Dget_space(dataset_);
+        hsize_t dims[2] = { 0, 0 };
+        if (dataset_ < 0 || space_ < 0 || H5Sget_simple_extent_ndims(space_) != 2)
+            fail(std::string(kDatasets[pick]) + " is not a 2-D dataset");
+        H5Sget_simple_extent_dims(space_, dims, nullptr);
+        if (dims[1] != 4)
+            fail(format("%s has %llu columns; MVSEC events have 4 (x, y, t, p)", kDatasets[pick], (unsigned long long)dims[1]));
+        rows_ = (int64)dims[0];
+        size_ = options.sensorSize.empty() ? Size(346, 260) : options.sensorSize;  // MVSEC: DAVIS346
+        }
+
+    void closeHandles()
+    {
+        if (space_ >= 0) H5Sclose(space_);
+        if (dataset_ >= 0) H5Dclose(dataset_);
+        if (file_ >= 0) H5Fclose(file_);
+        space_ = dataset_ = file_ = -1;
+    }
+
     bool exists(const char* name) const
     {
         // Walk the path: H5Lexists needs every parent to exist.

@@ -81,31 +81,15 @@ class RosBag2Reader CV_FINAL : public EventReader
 public:
     RosBag2Reader(const String& path, const ReaderOptions& options) : path_(path), files_(bagFiles(path))
     {
-        open(0);
-        // Event topics of the first file, sorted by name.
-        std::vector<std::pair<std::string, int>> topics;
-        sqlite3_stmt* q = prepare("SELECT name, id FROM topics WHERE type = ? ORDER BY name");
-        sqlite3_bind_text(q, 1, kEventPacket2, -1, SQLITE_STATIC);
-        while (sqlite3_step(q) == SQLITE_ROW)
-            topics.push_back(std::make_pair(std::string((const char*)sqlite3_column_text(q, 0)), sqlite3_column_int(q, 1)));
-        sqlite3_finalize(q);
-        if (topics.empty())
-            CV_Error_(Error::StsParseError, ("%s: no %s topic in the bag", files_[0].c_str(), kEventPacket2));
-        stereo_ = options.cameraFilter < 0 && topics.size() >= 2;
-        const int pick = std::max(0, options.cameraFilter);
-        if (pick >= (int)topics.size())
-            CV_Error_(Error::StsParseError, ("%s: no event topic for camera %d", files_[0].c_str(), pick));
-        topic_ = topics[pick].first;
-        size_ = options.sensorSize;
-        startQuery();
-        if (size_.empty())
+        // The destructor does not run when a constructor throws: close the database on the way out.
+        try
         {
-            // The first message tells the sensor size; decode it, then start again.
-            std::vector<Event> scratch;
-            next(scratch);
-            decoder_ = RosEventDecoder();
-            open(0);
-            startQuery();
+            init(options);
+        }
+        catch (...)
+        {
+            close();
+            throw;
         }
     }
 
@@ -145,6 +129,36 @@ public:
     }
 
 private:
+    void init(const ReaderOptions& options)
+    {
+        open(0);
+        // Event topics of the first file, sorted by name.
+        std::vector<std::pair<std::string, int>> topics;
+        sqlite3_stmt* q = prepare("SELECT name, id FROM topics WHERE type = ? ORDER BY name");
+        sqlite3_bind_text(q, 1, kEventPacket2, -1, SQLITE_STATIC);
+        while (sqlite3_step(q) == SQLITE_ROW)
+            topics.push_back(std::make_pair(std::string((const char*)sqlite3_column_text(q, 0)), sqlite3_column_int(q, 1)));
+        sqlite3_finalize(q);
+        if (topics.empty())
+            CV_Error_(Error::StsParseError, ("%s: no %s topic in the bag", files_[0].c_str(), kEventPacket2));
+        stereo_ = options.cameraFilter < 0 && topics.size() >= 2;
+        const int pick = std::max(0, options.cameraFilter);
+        if (pick >= (int)topics.size())
+            CV_Error_(Error::StsParseError, ("%s: no event topic for camera %d", files_[0].c_str(), pick));
+        topic_ = topics[pick].first;
+        size_ = options.sensorSize;
+        startQuery();
+        if (size_.empty())
+        {
+            // The first message tells the sensor size; decode it, then start again.
+            std::vector<Event> scratch;
+            next(scratch);
+            decoder_ = RosEventDecoder();
+            open(0);
+            startQuery();
+        }
+        }
+
     void open(size_t index)
     {
         close();

@@ -1,0 +1,45 @@
+#!/usr/bin/env bash
+# ctest `sanitizers`: the library, opencv_test_event and the samples built with AddressSanitizer and
+# UndefinedBehaviorSanitizer (gcc), then every unit test run under them. Any memory error, leak or undefined
+# behaviour aborts the run. Build dir outside the clone, with ccache: later runs only recompile what changed.
+#
+#   test/sanitizers.sh <opencv-source-dir> [build-dir]
+set -euo pipefail
+here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
+repo=$(cd "$here/.." && pwd)
+src=${1:?usage: sanitizers.sh <opencv-source-dir> [build-dir]}
+cache=${OPENCV_EVENT_CACHE:-/var/cache/opencv_event}
+build=${2:-$cache/sanitizers-build}
+export CCACHE_DIR=${CCACHE_DIR:-$cache/ccache}
+flags="-fsanitize=address,undefined -fno-sanitize-recover=undefined -fno-omit-frame-pointer -g -O1"
+launcher=()
+command -v ccache >/dev/null && launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache -DCMAKE_C_COMPILER_LAUNCHER=ccache)
+generator=()
+command -v ninja >/dev/null && generator=(-G Ninja)
+if [ -f "$build/CMakeCache.txt" ] && ! grep -qx "CMAKE_HOME_DIRECTORY:INTERNAL=$repo" "$build/CMakeCache.txt"; then
+  rm -rf "$build"  # configured for another clone
+fi
+echo "== sanitizers: building in $build"
+cmake -S "$repo" -B "$build" "${generator[@]}" "${launcher[@]}" -DCMAKE_BUILD_TYPE=Debug \
+  -DCMAKE_CXX_FLAGS="$flags" -DCMAKE_C_FLAGS="$flags" -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=address,undefined" \
+  -DCMAKE_SHARED_LINKER_FLAGS="-fsanitize=address,undefined" \
+  -DOPENCV_EVENT_OPENCV_SOURCE_DIR="$src" -DOPENCV_EVENT_BUILD_CONTRIB_TEST=OFF -DOPENCV_EVENT_BUILD_PERF_TESTS=OFF \
+  > "$build.configure.log" 2>&1 || { tail -40 "$build.configure.log"; exit 1; }
+cmake --build "$build" > "$build.build.log" 2>&1 || { tail -60 "$build.build.log"; exit 1; }
+echo "== sanitizers: opencv_test_event under ASan + UBSan"
+export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1:strict_string_checks=1
+export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
+export LSAN_OPTIONS=suppressions="$here/lsan.supp"
+"$build/modules/event/opencv_test_event"
+echo "== sanitizers: samples on the simulator and on every real recording"
+work=$(mktemp -d)
+"$build/samples/event_stereo_overview" --scene cluttered --simulate-ms 150 --output "$work/overview" > /dev/null
+"$build/samples/event_evaluate" --scene two_planes --method lifetime --duration-ms 100 --output "$work/eval" > /dev/null
+"$build/samples/event_evaluate" --scene two_planes --method sgbm --duration-ms 100 --output "$work/eval2" > /dev/null
+shared="${OPENCV_EVENT_SHARED_DATA:-$repo/../shared/data}"
+if [ -d "$shared" ]; then
+  "$build/samples/event_info" "$shared"/format_samples/* "$shared"/stereo_dvs128_tum/* > "$work/info.txt"
+  grep -c "format:" "$work/info.txt"
+fi
+rm -rf "$work"
+echo "== sanitizers: clean"
