@@ -5,6 +5,7 @@ set -euo pipefail
 repo=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 cache=${OPENCV_EVENT_CACHE:-/var/cache/opencv_event}
 export CCACHE_DIR=${CCACHE_DIR:-$cache/ccache}
+export CCACHE_BASEDIR=$repo  # paths relative to the clone: a fresh clone compiles from the cache
 src=$(cat "$cache/opencv-source-dir" 2>/dev/null || true)
 [ -n "$src" ] || { echo "build.sh: run scripts/setup.sh first" >&2; exit 1; }
 cmake -S "$repo" -B "$repo/build" -G Ninja -DCMAKE_BUILD_TYPE=Release \

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # ctest `sanitizers`: the library, opencv_test_event and the samples built with AddressSanitizer and
 # UndefinedBehaviorSanitizer (gcc), then every unit test run under them. Any memory error, leak or undefined
-# behaviour aborts the run. Build dir outside the clone, with ccache: later runs only recompile what changed.
+# behaviour aborts the run. The build dir is inside the clone (build-sanitizers/, ignored by git) and ccache
+# runs with CCACHE_BASEDIR = the clone, so a fresh clone compiles from the cache.
 #
 #   test/sanitizers.sh <opencv-source-dir> [build-dir]
 set -euo pipefail
@@ -9,16 +10,15 @@ here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
 repo=$(cd "$here/.." && pwd)
 src=${1:?usage: sanitizers.sh <opencv-source-dir> [build-dir]}
 cache=${OPENCV_EVENT_CACHE:-/var/cache/opencv_event}
-build=${2:-$cache/sanitizers-build}
+build=${2:-$repo/build-sanitizers}
 export CCACHE_DIR=${CCACHE_DIR:-$cache/ccache}
+export CCACHE_BASEDIR=$repo
+export CCACHE_NOHASHDIR=1  # -g would otherwise hash the build path into every object
 flags="-fsanitize=address,undefined -fno-sanitize-recover=undefined -fno-omit-frame-pointer -g -O1"
 launcher=()
 command -v ccache >/dev/null && launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache -DCMAKE_C_COMPILER_LAUNCHER=ccache)
 generator=()
 command -v ninja >/dev/null && generator=(-G Ninja)
-if [ -f "$build/CMakeCache.txt" ] && ! grep -qx "CMAKE_HOME_DIRECTORY:INTERNAL=$repo" "$build/CMakeCache.txt"; then
-  rm -rf "$build"  # configured for another clone
-fi
 echo "== sanitizers: building in $build"
 cmake -S "$repo" -B "$build" "${generator[@]}" "${launcher[@]}" -DCMAKE_BUILD_TYPE=Debug \
   -DCMAKE_CXX_FLAGS="$flags" -DCMAKE_C_FLAGS="$flags" -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=address,undefined" \
