@@ -230,25 +230,22 @@ uint16_t FlatTable::fieldOffset(int field) const
     return off;
 }
 
+// Scalars are inline fields: read them through structField(), which checks the bounds.
 int32_t FlatTable::int32Field(int field, int32_t defaultValue) const
 {
-    const uint16_t off = fieldOffset(field);
-    if (!off)
-        return defaultValue;
-    check(pos_ + off, 4, "int field");
-    int32_t v;
-    std::memcpy(&v, buf_ + pos_ + off, 4);
+    const uchar* p = structField(field, 4);
+    int32_t v = defaultValue;
+    if (p)
+        std::memcpy(&v, p, 4);
     return v;
 }
 
 int64 FlatTable::int64Field(int field, int64 defaultValue) const
 {
-    const uint16_t off = fieldOffset(field);
-    if (!off)
-        return defaultValue;
-    check(pos_ + off, 8, "long field");
-    int64 v;
-    std::memcpy(&v, buf_ + pos_ + off, 8);
+    const uchar* p = structField(field, 8);
+    int64 v = defaultValue;
+    if (p)
+        std::memcpy(&v, p, 8);
     return v;
 }
 
