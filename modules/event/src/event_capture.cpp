@@ -20,18 +20,6 @@ bool hasPrefix(const std::string& s, const char* prefix)
     return s.compare(0, std::strlen(prefix), prefix) == 0;
 }
 
-std::string extensionOf(const String& path)
-{
-    const size_t dot = path.find_last_of('.');
-    const size_t slash = path.find_last_of('/');
-    if (dot == String::npos || (slash != String::npos && dot < slash))
-        return std::string();
-    std::string ext = path.substr(dot + 1);
-    for (char& c : ext)
-        c = (char)std::tolower((unsigned char)c);
-    return ext;
-}
-
 // Prophesee .dat and .raw both start with "% " header lines: .dat headers name their event type, RAW headers
 // their encoding; the extension decides only when neither line is there.
 bool looksLikePropheseeDat(const std::string& head, const String& path)
@@ -40,7 +28,7 @@ bool looksLikePropheseeDat(const std::string& head, const String& path)
         return false;
     if (head.find("% Data file containing") != std::string::npos)
         return true;
-    return extensionOf(path) == "dat" && head.find("% evt ") == std::string::npos &&
+    return fileExtension(path) == "dat" && head.find("% evt ") == std::string::npos &&
            head.find("% format EVT") == std::string::npos;
 }
 

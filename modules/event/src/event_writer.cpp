@@ -7,6 +7,7 @@
 // and for the 16-byte event structs.
 
 #include "aedat4_codec.hpp"
+#include "file_input.hpp"
 
 #include <cerrno>
 #include <charconv>
@@ -129,11 +130,7 @@ public:
             CV_Error_(Error::StsBadArg, ("%s: sensor size %d x %d is not valid", p.c_str(), s.width, s.height));
         if (fmt == EVENT_FILE_AUTO)
         {
-            const size_t dot = p.find_last_of('.');
-            std::string ext = dot == String::npos ? std::string() : p.substr(dot + 1);
-            for (char& c : ext)
-                c = (char)std::tolower((unsigned char)c);
-            fmt = ext == "aedat4" ? EVENT_FILE_AEDAT4 : EVENT_FILE_TEXT;
+            fmt = fileExtension(p) == "aedat4" ? EVENT_FILE_AEDAT4 : EVENT_FILE_TEXT;
         }
         if (fmt != EVENT_FILE_TEXT && fmt != EVENT_FILE_AEDAT4)
             CV_Error_(Error::StsBadArg, ("%s: unknown EventFileFormat %d", p.c_str(), fmt));

@@ -111,6 +111,25 @@ void FileInput::seek(int64 offset)
     pos_ = end_ = buffer_.data();
 }
 
+void FileInput::checkWholeRecords(size_t recordSize, const char* what) const
+{
+    if (size_ < 0)
+        return;
+    const int64 rest = (size_ - offset()) % (int64)recordSize;
+    if (rest != 0)
+        formatError(path_, size_ - rest, format("truncated: %lld trailing bytes do not make a %zu-byte %s",
+                                                (long long)rest, recordSize, what));
+}
+
+std::string fileExtension(const String& path)
+{
+    const size_t dot = path.find_last_of('.');
+    const size_t slash = path.find_last_of('/');
+    if (dot == String::npos || (slash != String::npos && dot < slash))
+        return std::string();
+    return toLowerAscii(path.substr(dot + 1));
+}
+
 std::string readFilePrefix(const String& path, size_t n)
 {
     struct stat st;

@@ -9,6 +9,7 @@
 // message can say where the file is wrong.
 
 #include "precomp.hpp"
+#include "ascii.hpp"
 
 #include <cstdio>
 
@@ -46,6 +47,10 @@ public:
     int peek();
     /** Moves to an absolute offset. */
     void seek(int64 offset);
+    /** For formats of fixed-size records from the current offset to the end: raises formatError("truncated:
+    ...") at the first byte of an incomplete last @p what when the remaining size is not a multiple of
+    @p recordSize. Does nothing when the size is unknown (a pipe). */
+    void checkWholeRecords(size_t recordSize, const char* what) const;
 
 private:
     bool refill();
@@ -58,6 +63,9 @@ private:
     int64 fileOffset_ = 0;  // offset of end_
     int64 size_ = -1;
 };
+
+/** The lower-case extension of a path ("aedat4"), empty when its last component has none. */
+std::string fileExtension(const String& path);
 
 /** Reads the first @p n bytes of a file (fewer if it is shorter); empty when it cannot be opened. */
 std::string readFilePrefix(const String& path, size_t n);

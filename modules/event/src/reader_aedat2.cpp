@@ -48,9 +48,7 @@ public:
                 chip.erase(0, chip.find_first_not_of(' '));
             }
         }
-        std::string lower = chip;
-        for (char& c : lower)
-            c = (char)std::tolower((unsigned char)c);
+        const std::string lower = toLowerAscii(chip);
         if (lower.find("dvs128") != std::string::npos || (chip.empty() && recordSize_ == 6))
         {
             layout_ = AddressLayout::DVS128;
@@ -68,10 +66,7 @@ public:
         if (!options.sensorSize.empty() && options.sensorSize != size_)
             CV_Error_(Error::StsBadArg, ("%s: the file is from a %d x %d sensor (%s); a different sensor size was set",
                                          path.c_str(), size_.width, size_.height, chip.c_str()));
-        const int64 start = in_.offset();
-        if (in_.size() >= 0 && (in_.size() - start) % recordSize_ != 0)
-            formatError(path, in_.size() - (in_.size() - start) % recordSize_,
-                        format("truncated: trailing bytes do not make a %d-byte AEDAT record", recordSize_));
+        in_.checkWholeRecords((size_t)recordSize_, "AEDAT record");
     }
 
     String name() const CV_OVERRIDE { return "AEDAT2"; }

@@ -20,14 +20,12 @@ namespace {
 
 Size sizeOfDevice(const std::string& name)
 {
-    std::string n = name;
-    for (char& c : n)
-        c = (char)std::toupper((unsigned char)c);
-    if (n.find("DVS128") != std::string::npos) return Size(128, 128);
-    if (n.find("DAVIS240") != std::string::npos) return Size(240, 180);
-    if (n.find("DAVIS346") != std::string::npos) return Size(346, 260);
-    if (n.find("DAVIS640") != std::string::npos) return Size(640, 480);
-    if (n.find("DVXPLORER") != std::string::npos) return Size(640, 480);
+    const std::string n = toLowerAscii(name);
+    if (n.find("dvs128") != std::string::npos) return Size(128, 128);
+    if (n.find("davis240") != std::string::npos) return Size(240, 180);
+    if (n.find("davis346") != std::string::npos) return Size(346, 260);
+    if (n.find("davis640") != std::string::npos) return Size(640, 480);
+    if (n.find("dvxplorer") != std::string::npos) return Size(640, 480);
     return Size();
 }
 

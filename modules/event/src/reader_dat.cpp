@@ -42,13 +42,7 @@ public:
         if (typeAndSize[1] != 8)
             formatError(in_.path(), in_.offset() - 1,
                         format("event size %d; only 8-byte CD event records are supported", typeAndSize[1]));
-        dataStart_ = in_.offset();
-        if (in_.size() >= 0 && (in_.size() - dataStart_) % 8 != 0)
-            formatError(in_.path(), in_.size() - (in_.size() - dataStart_) % 8,
-                        format("truncated: %lld trailing bytes do not make an 8-byte event record",
-                               (long long)((in_.size() - dataStart_) % 8)));
-        if (in_.size() >= 0)
-            events_ = (in_.size() - dataStart_) / 8;
+        in_.checkWholeRecords(8, "event record");
     }
 
     String name() const CV_OVERRIDE { return "PROPHESEE_DAT"; }
@@ -79,8 +73,6 @@ public:
 private:
     FileInput in_;
     Size size_;
-    int64 dataStart_ = 0;
-    int64 events_ = -1;
     int64 high_ = 0;
     uint32_t last32_ = 0;
     bool haveLast_ = false;

@@ -61,11 +61,7 @@ public:
         }
         if (!options.sensorSize.empty())
             size_ = options.sensorSize;
-        dataStart_ = in_.offset();
-        const int wordSize = version_ == 3 ? 2 : 4;
-        if (in_.size() >= 0 && (in_.size() - dataStart_) % wordSize != 0)
-            formatError(path, in_.size() - (in_.size() - dataStart_) % wordSize,
-                        format("truncated: trailing bytes do not make a %d-byte EVT word", wordSize));
+        in_.checkWholeRecords(version_ == 3 ? 2 : 4, "EVT word");
     }
 
     String name() const CV_OVERRIDE { return version_ == 3 ? "PROPHESEE_EVT3" : "PROPHESEE_EVT2"; }
@@ -118,7 +114,6 @@ private:
     FileInput in_;
     Size size_;
     int version_ = -1;
-    int64 dataStart_ = 0;
     alignas(8) char buffer_[1 << 16];
     // EVT 2.0 state
     int64 skipped_ = 0;

@@ -3,6 +3,7 @@
 // of this distribution and at http://opencv.org/license.html.
 
 #include "precomp.hpp"
+#include "ascii.hpp"
 
 #include <cctype>
 #include <cstdio>
@@ -44,14 +45,6 @@ const SensorEntry& sensorEntry(int model)
     CV_Error_(Error::StsOutOfRange, ("unknown sensor model %d (see cv::event::SensorModel)", model));
 }
 
-std::string lowercase(const String& s)
-{
-    std::string r(s);
-    for (char& c : r)
-        c = (char)std::tolower((unsigned char)c);
-    return r;
-}
-
 // Converts one column of packEvents() input to an N x 1 Mat of the given depth.
 Mat columnAs(InputArray a, int depth, size_t n, const char* what)
 {
@@ -79,9 +72,9 @@ String getSensorModelName(int model)
 
 int findSensorModel(const String& name)
 {
-    const std::string key = lowercase(name);
+    const std::string key = detail::toLowerAscii(name);
     for (const SensorEntry& s : kSensors)
-        if (lowercase(s.name) == key)
+        if (detail::toLowerAscii(s.name) == key)
             return s.model;
     return -1;
 }
