@@ -35,6 +35,7 @@ namespace {
 struct Options
 {
     std::string scene = "two_planes", input, gt, method = "sgbm", output = "evaluation";
+    std::string settings;  // matcher parameters, "key: value" lines (from --set key=value)
     double durationMs = 500, windowMs = 33;
 };
 
@@ -73,6 +74,7 @@ private:
 struct EvaluationTotals
 {
     int64 events = 0, signal = 0, noise = 0, candidates = 0, estimated = 0, within1 = 0, withLifetime = 0;
+    int64 withLifetimeCamera[2] = { 0, 0 };
     int64 noiseTrue = 0, noiseFlagged = 0, noiseCorrect = 0;
     double absError = 0, relDepthError = 0;
     std::vector<int> errorHistogram = std::vector<int>(41, 0);  // |error| in 0.25 px bins up to 10 px
@@ -94,40 +96,30 @@ public:
     virtual void process(const std::vector<Event>& window, MethodOutput& out) = 0;
 };
 
-// FRAME_SGBM: per window, edge frames -> StereoSGBM (dv-processing's defaults) -> disparity per event.
-class FrameSgbm CV_FINAL : public Method
+// A StereoEventMatcher mode: COUPLED / DECOUPLED / FIXED_INTERVAL per event, FRAME_SGBM per window (the
+// windows here are the matcher's frame windows, so each frame gets exactly one window of events).
+class Matcher CV_FINAL : public Method
 {
 public:
-    explicit FrameSgbm(Size size) : size_(size)
+    Matcher(Size size, int mode, double windowUs, const std::string& settings) : matcher_(StereoEventMatcher::create(size, mode))
     {
-        sgbm_ = StereoSGBM::create(0, 48, 11, 8 * 121, 32 * 121, 0, 0, 15, 240, 1, StereoSGBM::MODE_SGBM_3WAY);
+        matcher_->setFrameWindow(windowUs);
+        if (!settings.empty())  // "key: value" lines, read as the matcher's own FileStorage parameters
+            matcher_->read(FileStorage("%YAML:1.0\n" + settings, FileStorage::READ | FileStorage::MEMORY).root());
     }
 
     void process(const std::vector<Event>& window, MethodOutput& out) CV_OVERRIDE
     {
-        Mat frame[2] = { Mat::zeros(size_, CV_8U), Mat::zeros(size_, CV_8U) };
-        for (const Event& e : window)
-            frame[e.camera].at<uchar>(e.y, e.x) = (uchar)std::min(255, frame[e.camera].at<uchar>(e.y, e.x) + 64);
-        Mat dl, dr, lf, rf, drf;
-        sgbm_->compute(frame[0], frame[1], dl);
-        // The right camera's view: mirror both images and swap them.
-        flip(frame[1], rf, 1);
-        flip(frame[0], lf, 1);
-        sgbm_->compute(rf, lf, drf);
-        flip(drf, dr, 1);
+        Mat disparity, lifetime;
+        matcher_->process(window, disparity, lifetime);
         out.hasDisparity = true;
-        out.disparity.resize(window.size());
-        for (size_t i = 0; i < window.size(); i++)
-        {
-            const Event& e = window[i];
-            const short d = (e.camera == CAMERA_LEFT ? dl : dr).at<short>(e.y, e.x);
-            out.disparity[i] = d > 0 ? d / 16.f : -1.f;
-        }
+        out.hasLifetime = matcher_->getMode() == STEREO_COUPLED || matcher_->getMode() == STEREO_DECOUPLED;
+        out.disparity.assign(disparity.begin<float>(), disparity.end<float>());
+        out.lifetime.assign(lifetime.begin<float>(), lifetime.end<float>());
     }
 
 private:
-    Size size_;
-    Ptr<StereoSGBM> sgbm_;
+    Ptr<StereoEventMatcher> matcher_;
 };
 
 // Lifetime per camera (LifetimeEstimator, plane fitting); no disparity.
@@ -201,15 +193,24 @@ int main(int argc, char** argv)
             else if (a == "--method") o.method = value();
             else if (a == "--window-ms") o.windowMs = std::stod(value());
             else if (a == "--output") o.output = value();
+            else if (a == "--set")
+            {
+                std::string kv = value();
+                const size_t eq = kv.find('=');
+                if (eq == std::string::npos)
+                    throw std::runtime_error("--set " + kv + ": expected NAME=VALUE (a StereoEventMatcher parameter)");
+                o.settings += kv.substr(0, eq) + ": " + kv.substr(eq + 1) + "\n";
+            }
             else
             {
                 std::cerr << "usage: event_evaluate [--scene NAME --duration-ms MS | --input REC [--gt REC.gt.csv]]\n"
-                             "       [--method sgbm|lifetime] [--window-ms MS] [--output DIR]\n";
+                             "       [--method coupled|decoupled|fixed|sgbm|lifetime] [--window-ms MS] [--output DIR]\n"
+                             "       [--set PARAM=VALUE ...]   (StereoEventMatcher parameters, e.g. uniquenessRatio=20)\n";
                 return a == "-h" || a == "--help" ? 0 : 2;
             }
         }
-        if (o.method != "sgbm" && o.method != "lifetime")
-            throw std::runtime_error("--method " + o.method + ": available methods: sgbm, lifetime");
+        if (o.method != "lifetime" && findStereoMode(o.method) < 0)
+            throw std::runtime_error("--method " + o.method + ": available methods: coupled, decoupled, fixed, sgbm, lifetime");
         if (!utils::fs::createDirectories(o.output))
             throw std::runtime_error(o.output + ": cannot create the output folder");
 
@@ -231,10 +232,10 @@ int main(int argc, char** argv)
             truthFile.reset(new TruthSource(o.gt.empty() ? o.input + ".gt.csv" : o.gt));
         }
         std::unique_ptr<Method> method;
-        if (o.method == "sgbm")
-            method.reset(new FrameSgbm(size));
-        else
+        if (o.method == "lifetime")
             method.reset(new Lifetime(size));
+        else
+            method.reset(new Matcher(size, findStereoMode(o.method), o.windowMs * 1000, o.settings));
         MethodOutput estimate;
         EvaluationTotals acc;
         std::vector<Event> window;
@@ -285,6 +286,7 @@ int main(int argc, char** argv)
                     if (!isNoise && !flagged)
                     {
                         acc.withLifetime++;
+                        acc.withLifetimeCamera[window[i].camera]++;
                         if (g[GT_LIFETIME] > 0)
                             acc.lifetimeRelErrors.push_back(std::abs(estimate.lifetime[i] - g[GT_LIFETIME]) / g[GT_LIFETIME]);
                     }
@@ -345,6 +347,8 @@ int main(int argc, char** argv)
             << "noise_precision_percent," << precision << "\n"
             << "noise_recall_percent," << recall << "\n"
             << "events_with_lifetime," << acc.withLifetime << "\n"
+            << "events_with_lifetime_left," << acc.withLifetimeCamera[0] << "\n"
+            << "events_with_lifetime_right," << acc.withLifetimeCamera[1] << "\n"
             << "time_per_event_us," << usPerEvent << "\n";
         std::ofstream md(o.output + "/report.md");
         md << "# Evaluation: " << o.method << " on " << (sim ? "simulated scene " + o.scene : o.input) << "\n\n"
@@ -358,7 +362,8 @@ int main(int argc, char** argv)
            << "| mean relative depth error | " << relDepth << " % |\n"
            << "| lifetime median relative error | " << lifetimeError << (estimate.hasLifetime ? " %" : " (" + o.method + " estimates no lifetimes)") << " |\n"
            << "| noise precision / recall | " << precision << " / " << recall << (estimate.hasLifetime ? " %" : " (" + o.method + " does not classify noise)") << " |\n"
-           << "| events with a lifetime | " << acc.withLifetime << " |\n"
+           << "| events with a lifetime (left / right) | " << acc.withLifetime << " (" << acc.withLifetimeCamera[0]
+           << " / " << acc.withLifetimeCamera[1] << ") |\n"
            << "| time per event | " << usPerEvent << " us |\n\n"
            << "![error histogram](disparity_error_histogram.png)\n\n"
            << "![estimate | ground truth](disparity_vs_truth.png)\n";

@@ -66,9 +66,7 @@ public:
 
     float processEvent(const Event& e, Vec2f& flow, int& status) CV_OVERRIDE
     {
-        if ((unsigned)e.x >= (unsigned)size_.width || (unsigned)e.y >= (unsigned)size_.height)
-            CV_Error_(Error::StsOutOfRange, ("LifetimeEstimator: event at (x=%d, y=%d), t=%lld us, is outside the "
-                                             "%d x %d sensor", e.x, e.y, (long long)e.t, size_.width, size_.height));
+        checkInside(e);
         const int p = e.p ? 1 : 0;
         const size_t idx = index(e.x, e.y, p);
         double a = 0, b = 0;
@@ -102,6 +100,27 @@ public:
         act.lifetime = lifetime;
         act.p = (uchar)p;
         return lifetime;
+    }
+
+    void insertEvent(const Event& e, float lifetime, const Vec2f& flow) CV_OVERRIDE
+    {
+        checkInside(e);
+        const int p = e.p ? 1 : 0;
+        const size_t idx = index(e.x, e.y, p);
+        predictions_[idx].valid = false;
+        surface_[idx] = e.t;
+        const double v2 = (double)flow[0] * flow[0] + (double)flow[1] * flow[1];
+        if (lifetime > 0 && v2 > 0)
+        {
+            // Gradient g = v / |v|^2, with v in px/ms: the plane that produced this flow.
+            const double vx = flow[0] * 1e-3, vy = flow[1] * 1e-3, v2ms = v2 * 1e-6;
+            predictNeighbour(e, p, vx / v2ms, vy / v2ms);
+        }
+        counts_[LIFETIME_MATCHED]++;
+        Active& act = active_[(size_t)e.y * size_.width + e.x];
+        act.t = e.t;
+        act.lifetime = std::max(lifetime, 0.f);
+        act.p = (uchar)p;
     }
 
     void renderActiveEvents(double t, OutputArray image) const CV_OVERRIDE
@@ -226,6 +245,13 @@ private:
         if (!(v > 0))
             CV_Error_(Error::StsBadArg, ("LifetimeEstimator: %s %g; must be > 0", what, v));
         return v;
+    }
+
+    void checkInside(const Event& e) const
+    {
+        if ((unsigned)e.x >= (unsigned)size_.width || (unsigned)e.y >= (unsigned)size_.height)
+            CV_Error_(Error::StsOutOfRange, ("LifetimeEstimator: event at (x=%d, y=%d), t=%lld us, is outside the "
+                                             "%d x %d sensor", e.x, e.y, (long long)e.t, size_.width, size_.height));
     }
 
     size_t index(int x, int y, int p) const { return (size_t)p * size_.area() + (size_t)y * size_.width + x; }

@@ -452,6 +452,24 @@ std::vector<SimulatedPlane> namedScene(const String& name, SimulatorSettings& s)
         planes.push_back(line);
         s.rightThresholdScale = 1.6;
     }
+    else if (name == "faint_line")
+    {
+        // Log contrast ln(0.145 / 0.1) = 0.37: just above the right sensor's 1.6 x 0.2 = 0.32 threshold, so
+        // with the per-pixel mismatch the weak sensor fires at only part of the line's pixels.
+        SimulatedPlane back;
+        back.center = Vec3d(0, 0, 1.5);
+        back.halfSize = Vec2d(5, 5);
+        back.texture = TEXTURE_UNIFORM;
+        back.intensity = 0.1;
+        SimulatedPlane line = back;
+        line.center = Vec3d(-0.5, 0, 1.2);
+        line.halfSize = Vec2d(0.012, 0.35);
+        line.intensity = 0.1375;
+        line.velocity = Vec3d(0.45, 0, 0);
+        planes.push_back(back);
+        planes.push_back(line);
+        s.rightThresholdScale = 1.6;
+    }
     else if (name == "cluttered")
     {
         planes.push_back(texturedPlane(Vec3d(0, 0, 3.0), Vec2d(6, 6), Vec3d(0.1, 0.05, 0), 0.15, 31));
@@ -468,7 +486,7 @@ std::vector<SimulatedPlane> namedScene(const String& name, SimulatorSettings& s)
         s.noiseRateHz = 0.5;
     }
     else
-        CV_Error_(Error::StsBadArg, ("StereoEventSimulator: unknown scene \"%s\" (plane, two_planes, moving_line, cluttered)",
+        CV_Error_(Error::StsBadArg, ("StereoEventSimulator: unknown scene \"%s\" (plane, two_planes, moving_line, faint_line, cluttered)",
                                      name.c_str()));
     return planes;
 }
@@ -477,7 +495,7 @@ std::vector<SimulatedPlane> namedScene(const String& name, SimulatorSettings& s)
 
 std::vector<String> StereoEventSimulator::sceneNames()
 {
-    return std::vector<String>{ "plane", "two_planes", "moving_line", "cluttered" };
+    return std::vector<String>{ "plane", "two_planes", "moving_line", "faint_line", "cluttered" };
 }
 
 Ptr<StereoEventSimulator> StereoEventSimulator::create(const String& scene, int sensorModel, int seed)

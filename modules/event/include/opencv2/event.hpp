@@ -11,6 +11,8 @@
 #include "opencv2/event/event_writer.hpp"
 #include "opencv2/event/simulator.hpp"
 #include "opencv2/event/lifetime_estimator.hpp"
+#include "opencv2/event/stereo_calibration.hpp"
+#include "opencv2/event/stereo_event_matcher.hpp"
 
 /** @defgroup event Event cameras: lifetime and stereo disparity
 
@@ -29,6 +31,7 @@ through the usual InputArray / OutputArray (see event::Event for the layout and 
     @defgroup event_io Reading recordings and cameras
     @defgroup event_simulator Stereo event simulator with ground truth
     @defgroup event_lifetime Event lifetime and normal flow
+    @defgroup event_stereo Stereo calibration, per-event disparity and depth
 @}
 */
 

@@ -60,6 +60,11 @@ public:
     @return the lifetime [us], 0 for noise. */
     virtual float processEvent(const Event& event, Vec2f& flow, int& status) = 0;
 
+    /** @brief Records an event whose lifetime was obtained elsewhere (a stereo match; counted as
+    LIFETIME_MATCHED): it enters the surface and the active-event image, and a non-zero @p flow [px/s]
+    predicts the neighbour's plane as a fitted one would. Nothing is fitted. */
+    virtual void insertEvent(const Event& event, float lifetime, const Vec2f& flow) = 0;
+
     /** @brief Image of the events alive at time @p t: an event lives from its timestamp to timestamp +
     lifetime; one per pixel (the latest). CV_8U, 255 = alive ON, 128 = alive OFF, 0 = nothing. */
     CV_WRAP virtual void renderActiveEvents(double t, OutputArray image) const = 0;

@@ -1,0 +1,79 @@
+// This file is part of OpenCV project.
+// It is subject to the license terms in the LICENSE file found in the top-level directory
+// of this distribution and at http://opencv.org/license.html.
+
+#ifndef OPENCV_EVENT_STEREO_CALIBRATION_HPP
+#define OPENCV_EVENT_STEREO_CALIBRATION_HPP
+
+#include "opencv2/event/types.hpp"
+
+namespace cv {
+namespace event {
+
+//! @addtogroup event_stereo
+//! @{
+
+/** @brief Calibration of a stereo event-camera pair, in the form cv::stereoRectify produces.
+
+Camera i maps a raw pixel through its intrinsics Ki and distortion Di (pinhole with OpenCV's radial-
+tangential model, or the equidistant fisheye model when @ref fisheye is set), rotates it by Ri into the common
+rectified frame and projects it with the 3x4 Pi. In the rectified images corresponding points share a row,
+and a left point at x_l matches the right point at x_r = x_l - d; depth = f B / d with f = P1(0,0) and the
+baseline B = -P2(0,3) / P2(0,0).
+
+Sources: readStereoCalibration() (an OpenCV FileStorage file as cv::stereoCalibrate + cv::stereoRectify write
+it, or a Kalibr camchain YAML), fromRectified() (a pair that is rectified already, e.g. the simulator), or
+the fields set directly. */
+struct CV_EXPORTS_W_SIMPLE StereoCalibration
+{
+    CV_PROP_RW Size imageSize;  //!< sensor size of both cameras (raw and rectified images share it)
+    CV_PROP_RW Mat K1, D1, R1, P1;  //!< left: 3x3 intrinsics, distortion, 3x3 rectifying rotation, 3x4 projection
+    CV_PROP_RW Mat K2, D2, R2, P2;  //!< right: the same
+    CV_PROP_RW bool fisheye = false;  //!< D1 / D2 are equidistant (cv::fisheye) coefficients k1..k4
+
+    CV_WRAP StereoCalibration() {}
+
+    /** @brief A pair that needs no rectification (identity rotation, no distortion): both cameras have focal
+    length @p focalLength [px] and the principal point at the image centre, the right camera @p baseline [m]
+    to the right of the left one. */
+    CV_WRAP static StereoCalibration fromRectified(Size imageSize, double focalLength, double baseline);
+
+    /** @brief Rectified focal length f = P1(0,0) [px]; 0 when the calibration is empty. */
+    CV_WRAP double focalLength() const;
+    /** @brief Baseline B = -P2(0,3) / P2(0,0) [m, or the unit of the calibration's translation]. */
+    CV_WRAP double baseline() const;
+    /** @brief True when no calibration is set (P1 is empty). */
+    CV_WRAP bool empty() const;
+    /** @brief Throws cv::Exception (StsBadArg) naming the first wrong field: sizes and types of the
+    matrices, a positive image size and focal length, a non-zero baseline. */
+    CV_WRAP void validate() const;
+
+    /** @brief Maps raw pixels to rectified coordinates (CV_32FC2, N x 1) for camera @p camera (CameraId). */
+    CV_WRAP void rectifyPoints(InputArray points, OutputArray rectified, int camera) const;
+
+    /** @brief Writes K1 D1 R1 P1 K2 D2 R2 P2, imageSize and fisheye under the current node. */
+    void write(FileStorage& fs) const;
+};
+
+/** @brief Reads a stereo calibration file; the kind is recognised from the keys.
+- OpenCV FileStorage (YAML, XML or JSON) with the intrinsics under K1/M1/cameraMatrix1, D1/distCoeffs1,
+  K2/M2/cameraMatrix2, D2/distCoeffs2, the image size under imageSize or image_width + image_height, and
+  either R1, R2, P1, P2 (as cv::stereoRectify returns them; used as given) or the extrinsics R, T (rectified
+  here with cv::stereoRectify, CALIB_ZERO_DISPARITY, alpha = 0). An optional `fisheye` flag (0/1) selects the
+  equidistant model.
+- Kalibr camchain YAML: cam0 / cam1 with camera_model pinhole, intrinsics [fu, fv, pu, pv], distortion_model
+  radtan, equidistant or none, distortion_coeffs, resolution [w, h], and cam1's T_cn_cnm1 (4x4, cam0 -> cam1);
+  rectified as above.
+Errors (missing file, missing or malformed key, a camchain that is not pinhole) raise cv::Exception with the
+path and the key. */
+CV_EXPORTS_W StereoCalibration readStereoCalibration(const String& path);
+
+/** @brief Writes @p calibration to an OpenCV FileStorage file that readStereoCalibration() reads back. */
+CV_EXPORTS_W void writeStereoCalibration(const String& path, const StereoCalibration& calibration);
+
+//! @}
+
+}  // namespace event
+}  // namespace cv
+
+#endif  // OPENCV_EVENT_STEREO_CALIBRATION_HPP

@@ -1,0 +1,176 @@
+// This file is part of OpenCV project.
+// It is subject to the license terms in the LICENSE file found in the top-level directory
+// of this distribution and at http://opencv.org/license.html.
+
+#ifndef OPENCV_EVENT_STEREO_EVENT_MATCHER_HPP
+#define OPENCV_EVENT_STEREO_EVENT_MATCHER_HPP
+
+#include "opencv2/event/lifetime_estimator.hpp"
+#include "opencv2/event/stereo_calibration.hpp"
+
+namespace cv {
+namespace event {
+
+//! @addtogroup event_stereo
+//! @{
+
+/** @brief How StereoEventMatcher couples lifetime estimation and matching. */
+enum StereoMatchMode
+{
+    STEREO_COUPLED = 0,         //!< the paper's method: a matched event takes its lifetime from the other sensor
+    STEREO_DECOUPLED = 1,       //!< plane-fit lifetime for every event of each sensor, then matching
+    STEREO_FIXED_INTERVAL = 2,  //!< no lifetimes: every event stays active for a fixed interval (10 ms)
+    STEREO_FRAME_SGBM = 3       //!< what users do today: edge frames per time window + cv::StereoSGBM
+};
+
+/** @brief Bits of the per-event flags StereoEventMatcher outputs. */
+enum StereoEventFlags
+{
+    STEREO_HAS_DISPARITY = 1,       //!< a disparity (and, with a calibration, a depth) was estimated
+    STEREO_HAS_LIFETIME = 2,        //!< a lifetime was estimated
+    STEREO_LIFETIME_MATCHED = 4,    //!< ... as the median lifetime of the matched window of the other sensor
+    STEREO_LIFETIME_PREDICTED = 8,  //!< ... by reusing the plane predicted for this pixel (no fit)
+    STEREO_NOISE = 16,              //!< no local plane and no match: classified as noise
+    STEREO_AMBIGUOUS = 32,          //!< candidates existed but none passed the uniqueness test
+    STEREO_NO_COUNTERPART = 64,     //!< the other sensor had no active structure along the row (yet)
+    STEREO_OUTSIDE = 128            //!< the rectified position lies outside the image: not processed
+};
+
+/** @brief Everything StereoEventMatcher estimates for one event. */
+struct CV_EXPORTS StereoEventEstimate
+{
+    float disparity = -1.f;  //!< x_left - x_right [px], sub-pixel; StereoEventMatcher::NO_DISPARITY when none
+    float depth = 0.f;       //!< f B / disparity [m] with a calibration; 0 when unknown
+    float lifetime = 0.f;    //!< [us]; 0 when none
+    Vec2f flow;              //!< normal optical flow [px/s] of the plane (or of the matched event); 0 when none
+    int flags = 0;           //!< StereoEventFlags
+    Point rectified = Point(-1, -1);  //!< the event's rectified pixel; (-1, -1) when outside
+};
+
+/** @brief Per-event stereo disparity and lifetime for a stereo pair of event cameras (Hadviger et al.
+@cite Hadviger2019), with the descriptor of Zou et al. @cite Zou2017.
+
+Events of both sensors come in one time-ordered stream (Event::camera tells them apart, see
+mergeStereoEvents / EventCapture::openStereo); each is rectified through a per-pixel lookup table built from
+the calibration (none: the input is taken as rectified) and matched, when it arrives, against what the other
+sensor shows at that moment, so either sensor's events may come first.
+
+**Descriptor.** Each sensor keeps, per pixel and polarity, the vector to the nearest *active* event (an
+event is active from its timestamp until timestamp + lifetime; only events up to the current time exist).
+Vectors longer than the maximum vector length are dropped: far vectors would otherwise fill the histograms
+with scene layout instead of local structure. The descriptor of a pixel is the histogram of the vectors of
+the N x N window around it over 12 orientation bins of 30 degrees per polarity (24 values; a pixel that is
+itself active votes into all 12 bins of its polarity). These maps are maintained incrementally as events
+activate and expire.
+
+**Cost and decision.** For each disparity d in [min, max] whose candidate pixel has active structure of the
+event's polarity, the cost is the sum over a W x W window of the SADs between the event's descriptors and
+the candidate's. Aggregation is iterative: while the winner is not unique, the window grows by a ring of
+one pixel, up to A x A. The winner (with sub-pixel parabola refinement) is accepted when its cost is below
+(100 - uniquenessRatio) % of every candidate further than one pixel away; otherwise the event is flagged
+ambiguous and gets no disparity rather than a wrong one.
+
+**Modes** (StereoMatchMode), all with the same outputs:
+- COUPLED: the event is matched first; on a match its lifetime is the median lifetime of the active events
+  of its polarity in the matched W x W window of the other sensor and its plane is not fitted; otherwise
+  the LifetimeEstimator of its sensor fits one (or classifies it as noise).
+- DECOUPLED: the LifetimeEstimator runs for every event, then the event is matched.
+- FIXED_INTERVAL: every event is active for getFixedInterval() microseconds; no lifetimes.
+- FRAME_SGBM: per time window (getFrameWindow(), aligned to multiples of it), each sensor's events are
+  accumulated into an edge frame and cv::StereoSGBM (dv-processing's settings) computes a disparity map;
+  each event takes its pixel's disparity. It works on packets: process() with whole windows (e.g. from
+  EventCapture with EVENT_CAP_PROP_WINDOW_US = the frame window) gives exactly that; a window split over
+  several calls is computed from the events seen so far. processEvent() is not available in this mode.
+
+Memory is O(sensor pixels): the per-pixel maps, an expiry heap over pixels and the two LifetimeEstimators.
+*/
+class CV_EXPORTS_W StereoEventMatcher : public Algorithm
+{
+public:
+    enum { NO_DISPARITY = -1 };
+
+    /** @brief A matcher for two sensors of @p sensorSize in mode @p mode (StereoMatchMode). */
+    CV_WRAP static Ptr<StereoEventMatcher> create(Size sensorSize = Size(240, 180), int mode = STEREO_COUPLED);
+
+    /** @brief Processes a time-ordered packet of stereo events.
+    @param events the packet (any form getEventMat() accepts), both cameras.
+    @param disparity output N x 1 CV_32F [px]; NO_DISPARITY where none.
+    @param lifetime output N x 1 CV_32F [us]; 0 where none.
+    @param flags output N x 1 CV_32S StereoEventFlags.
+    @param depth output N x 1 CV_32F [m] (needs a calibration); 0 where unknown.
+    @param flow output N x 2 CV_32F normal flow [px/s]; 0 where none.
+    Time must not go backwards, within a packet or across calls (cv::Exception naming the event). */
+    CV_WRAP virtual void process(InputArray events, OutputArray disparity, OutputArray lifetime = noArray(),
+                                 OutputArray flags = noArray(), OutputArray depth = noArray(),
+                                 OutputArray flow = noArray()) = 0;
+
+    /** @brief The same for one event (all modes but FRAME_SGBM; identical results to process()). */
+    virtual void processEvent(const Event& event, StereoEventEstimate& estimate) = 0;
+
+    /** @brief Colour-coded disparity of the events of @p camera active at time @p t [us] (the paper's
+    Figure 1): JET from min (blue) to max disparity (red), black where there is none, and a labelled colour
+    bar on the right when @p colourBar is set. CV_8UC3, sensor height x (sensor width + bar). */
+    CV_WRAP virtual void renderDisparity(double t, OutputArray image, int camera = CAMERA_LEFT,
+                                         bool colourBar = true) const = 0;
+
+    /** @brief Forgets all events (keeps parameters and calibration). */
+    CV_WRAP virtual void reset() = 0;
+
+    /** @brief Rectification and depth: events are rectified with lookup tables built from it; an empty
+    calibration (the default) takes the input as rectified and outputs no depth. */
+    virtual void setCalibration(const StereoCalibration& calibration) = 0;
+    virtual const StereoCalibration& getCalibration() const = 0;
+    /** @brief setCalibration(readStereoCalibration(path)). */
+    CV_WRAP virtual void loadCalibration(const String& path) = 0;
+
+    /** @brief The plane fitter of a sensor (CameraId), to set its parameters; both start with the defaults. */
+    CV_WRAP virtual Ptr<LifetimeEstimator> getLifetimeEstimator(int camera) const = 0;
+
+    CV_WRAP virtual int getMode() const = 0;
+    CV_WRAP virtual void setMode(int mode) = 0;
+    CV_WRAP virtual Size getSensorSize() const = 0;
+    CV_WRAP virtual void setSensorSize(Size size) = 0;
+    /** @brief Smallest disparity searched [px] (default 0). */
+    CV_WRAP virtual int getMinDisparity() const = 0;
+    CV_WRAP virtual void setMinDisparity(int d) = 0;
+    /** @brief Largest disparity searched [px] (default 40). */
+    CV_WRAP virtual int getMaxDisparity() const = 0;
+    CV_WRAP virtual void setMaxDisparity(int d) = 0;
+    /** @brief N, the side of the window each descriptor histograms (odd, default 3). */
+    CV_WRAP virtual int getDescriptorWindow() const = 0;
+    CV_WRAP virtual void setDescriptorWindow(int n) = 0;
+    /** @brief Longest nearest-active-event vector that votes [px] (default 3). */
+    CV_WRAP virtual int getMaxVectorLength() const = 0;
+    CV_WRAP virtual void setMaxVectorLength(int r) = 0;
+    /** @brief W, the side of the first cost window (odd, default 9). */
+    CV_WRAP virtual int getCostWindow() const = 0;
+    CV_WRAP virtual void setCostWindow(int w) = 0;
+    /** @brief A, the side of the largest window the iterative aggregation grows to (odd, >= W, default 17). */
+    CV_WRAP virtual int getAggregationWindow() const = 0;
+    CV_WRAP virtual void setAggregationWindow(int a) = 0;
+    /** @brief Margin [%] by which the best cost must beat every other candidate (default 25). */
+    CV_WRAP virtual int getUniquenessRatio() const = 0;
+    CV_WRAP virtual void setUniquenessRatio(int ratio) = 0;
+    /** @brief FIXED_INTERVAL: how long every event stays active [us] (default 10000). */
+    CV_WRAP virtual double getFixedInterval() const = 0;
+    CV_WRAP virtual void setFixedInterval(double us) = 0;
+    /** @brief FRAME_SGBM: accumulation window [us] (default 33000). */
+    CV_WRAP virtual double getFrameWindow() const = 0;
+    CV_WRAP virtual void setFrameWindow(double us) = 0;
+    /** @brief Longest lifetime an event may keep active [us] (default 100000, the plane fit's dt): bounds
+    how long a slow or wrong estimate pollutes the descriptors. */
+    CV_WRAP virtual double getMaxLifetime() const = 0;
+    CV_WRAP virtual void setMaxLifetime(double us) = 0;
+};
+
+/** @brief "coupled", "decoupled", "fixed" or "sgbm" for a StereoMatchMode. */
+CV_EXPORTS_W String getStereoModeName(int mode);
+/** @brief The StereoMatchMode named (as getStereoModeName writes it, case-insensitive); -1 when unknown. */
+CV_EXPORTS_W int findStereoMode(const String& name);
+
+//! @}
+
+}  // namespace event
+}  // namespace cv
+
+#endif  // OPENCV_EVENT_STEREO_EVENT_MATCHER_HPP

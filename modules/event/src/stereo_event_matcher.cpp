@@ -1,0 +1,751 @@
+// This file is part of OpenCV project.
+// It is subject to the license terms in the LICENSE file found in the top-level directory
+// of this distribution and at http://opencv.org/license.html.
+
+// Per-event stereo disparity and lifetime (Hadviger et al. 2019): the coupled method, its decoupled and
+// fixed-interval baselines, and the frame + SGBM baseline. See stereo_event_matcher.hpp for the method.
+
+#include "precomp.hpp"
+#include "ascii.hpp"
+#include "frame_sgbm_matcher.hpp"
+#include "zou_descriptor_map.hpp"
+
+#include "opencv2/core/hal/intrin.hpp"
+#include "opencv2/imgproc.hpp"
+
+#include <limits>
+
+namespace cv {
+namespace event {
+
+namespace {
+
+// SAD of two 32-byte descriptors (bytes 24..31 are zero in both).
+inline unsigned descriptorSad(const uchar* a, const uchar* b)
+{
+#if CV_SIMD128
+    return v_reduce_sad(v_load(a), v_load(b)) + v_reduce_sad(v_load(a + 16), v_load(b + 16));
+#else
+    unsigned s = 0;
+    for (int i = 0; i < 24; i++)
+        s += (unsigned)std::abs((int)a[i] - (int)b[i]);
+    return s;
+#endif
+}
+
+struct MatchResult
+{
+    float disparity = -1.f;
+    int counterpartX = -1;  // the matched pixel of the other sensor (integer disparity)
+    int flags = 0;          // STEREO_AMBIGUOUS / STEREO_NO_COUNTERPART when no disparity
+};
+
+class StereoEventMatcherImpl CV_FINAL : public StereoEventMatcher
+{
+public:
+    StereoEventMatcherImpl(Size size, int mode)
+    {
+        estimators_[0] = LifetimeEstimator::create(size);
+        estimators_[1] = LifetimeEstimator::create(size);
+        checkMode(mode);
+        mode_ = mode;
+        setSensorSize(size);
+    }
+
+    void process(InputArray events, OutputArray disparity, OutputArray lifetime, OutputArray flags, OutputArray depth,
+                 OutputArray flow) CV_OVERRIDE
+    {
+        Mat_<Event> ev = getEventMat(events);
+        const int n = (int)ev.total();
+        disparity.create(n, 1, CV_32F);
+        Mat_<float> disp = disparity.getMat(), lt, dep, fl;
+        Mat_<int> fla;
+        if (lifetime.needed())
+        {
+            lifetime.create(n, 1, CV_32F);
+            lt = lifetime.getMat();
+        }
+        if (flags.needed())
+        {
+            flags.create(n, 1, CV_32S);
+            fla = flags.getMat();
+        }
+        if (depth.needed())
+        {
+            depth.create(n, 1, CV_32F);
+            dep = depth.getMat();
+        }
+        if (flow.needed())
+        {
+            flow.create(n, 2, CV_32F);
+            fl = flow.getMat();
+        }
+        auto store = [&](int i, const StereoEventEstimate& s) {
+            disp(i) = s.disparity;
+            if (!lt.empty())
+                lt(i) = s.lifetime;
+            if (!fla.empty())
+                fla(i) = s.flags;
+            if (!dep.empty())
+                dep(i) = s.depth;
+            if (!fl.empty())
+            {
+                fl(i, 0) = s.flow[0];
+                fl(i, 1) = s.flow[1];
+            }
+        };
+        if (mode_ == STEREO_FRAME_SGBM)
+        {
+            processFrames(ev, store);
+            return;
+        }
+        StereoEventEstimate s;
+        for (int i = 0; i < n; i++)
+        {
+            processEvent(ev(i), s);
+            store(i, s);
+        }
+    }
+
+    void processEvent(const Event& e, StereoEventEstimate& est) CV_OVERRIDE
+    {
+        if (mode_ == STEREO_FRAME_SGBM)
+            CV_Error(Error::StsNotImplemented, "StereoEventMatcher: FRAME_SGBM works on windows of events; use process() "
+                                               "with whole windows (processEvent is for the per-event modes)");
+        est = StereoEventEstimate();
+        const Point r = admit(e);
+        est.rectified = r;
+        if (r.x < 0)
+        {
+            est.flags = STEREO_OUTSIDE;
+            return;
+        }
+        const int c = e.camera, p = e.p ? 1 : 0;
+        Event re = e;
+        re.x = (short)r.x;
+        re.y = (short)r.y;
+        maps_[0].expireUntil(e.t);
+        maps_[1].expireUntil(e.t);
+
+        int status = -1;
+        if (mode_ == STEREO_DECOUPLED)
+            est.lifetime = estimators_[c]->processEvent(re, est.flow, status);
+        // The event takes part in its own descriptor while it is matched; its final activity follows below.
+        maps_[c].activate(r.x, r.y, p, std::numeric_limits<int64>::max(), 0.f, Vec2f());
+        const MatchResult m = match(c, r, p);
+        est.disparity = m.disparity;
+        est.flags |= m.flags;
+        if (mode_ == STEREO_COUPLED)
+        {
+            if (m.disparity >= 0 && matchedLifetime(1 - c, m.counterpartX, r.y, p, est.lifetime, est.flow))
+            {
+                estimators_[c]->insertEvent(re, est.lifetime, est.flow);
+                status = LIFETIME_MATCHED;
+            }
+            else
+                est.lifetime = estimators_[c]->processEvent(re, est.flow, status);
+        }
+
+        int64 activeFor = 0;
+        if (mode_ == STEREO_FIXED_INTERVAL)
+            activeFor = fixedInterval_;
+        else if (est.lifetime > 0)
+            activeFor = std::max<int64>(1, std::min<int64>((int64)std::llround(est.lifetime), maxLifetime_));
+        if (activeFor > 0)
+            maps_[c].activate(r.x, r.y, p, e.t + activeFor, est.lifetime, est.flow);
+        else
+            maps_[c].deactivate(r.x, r.y, p);
+
+        if (est.disparity >= 0)
+        {
+            est.flags |= STEREO_HAS_DISPARITY;
+            if (est.disparity > 0 && focalBaseline_ != 0)
+                est.depth = (float)(focalBaseline_ / est.disparity);
+        }
+        if (est.lifetime > 0)
+        {
+            est.flags |= STEREO_HAS_LIFETIME;
+            if (status == LIFETIME_MATCHED)
+                est.flags |= STEREO_LIFETIME_MATCHED;
+            else if (status == LIFETIME_PREDICTED)
+                est.flags |= STEREO_LIFETIME_PREDICTED;
+        }
+        else if (status == LIFETIME_NOISE)
+        {
+            est.flags |= STEREO_NOISE;
+            est.flow = Vec2f();
+        }
+        remember(c, r, e.t, activeFor, est.disparity);
+    }
+
+    void renderDisparity(double t, OutputArray image, int camera, bool colourBar) const CV_OVERRIDE
+    {
+        CV_CheckGE(camera, 0, "StereoEventMatcher::renderDisparity: camera is CAMERA_LEFT or CAMERA_RIGHT");
+        CV_CheckLE(camera, 1, "StereoEventMatcher::renderDisparity: camera is CAMERA_LEFT or CAMERA_RIGHT");
+        const int barWidth = colourBar ? 56 : 0;
+        image.create(size_.height, size_.width + barWidth, CV_8UC3);
+        Mat img = image.getMat();
+        img.setTo(Scalar::all(0));
+        const Mat lut = colourLut();
+        const RenderState& rs = render_[camera];
+        for (int y = 0; y < size_.height; y++)
+        {
+            Vec3b* row = img.ptr<Vec3b>(y);
+            for (int x = 0; x < size_.width; x++)
+            {
+                const size_t i = (size_t)y * size_.width + x;
+                if (rs.disparity[i] < 0 || !(rs.t[i] <= t && t < (double)rs.until[i]))
+                    continue;
+                row[x] = lut.at<Vec3b>(colourIndex(rs.disparity[i]));
+            }
+        }
+        if (!colourBar)
+            return;
+        // Bar: max disparity at the top, min at the bottom, labelled.
+        const int x0 = size_.width + 6, x1 = x0 + 12, top = 12, bottom = size_.height - 12;
+        for (int y = top; y <= bottom; y++)
+        {
+            const double d = maxDisparity_ - (double)(y - top) / std::max(1, bottom - top) * (maxDisparity_ - minDisparity_);
+            line(img, Point(x0, y), Point(x1, y), Scalar(lut.at<Vec3b>(colourIndex((float)d))), 1);
+        }
+        const Scalar white(255, 255, 255);
+        putText(img, std::to_string(maxDisparity_), Point(x1 + 3, top + 8), FONT_HERSHEY_PLAIN, 0.8, white, 1);
+        putText(img, std::to_string(minDisparity_), Point(x1 + 3, bottom), FONT_HERSHEY_PLAIN, 0.8, white, 1);
+        putText(img, "px", Point(x1 + 3, (top + bottom) / 2 + 4), FONT_HERSHEY_PLAIN, 0.8, white, 1);
+    }
+
+    void reset() CV_OVERRIDE
+    {
+        const int margin = std::max(aggregationWindow_ / 2, descriptorWindow_ / 2);
+        for (int c = 0; c < 2; c++)
+        {
+            maps_[c].configure(size_, descriptorWindow_, maxVectorLength_, margin);
+            estimators_[c]->reset();
+            RenderState& rs = render_[c];
+            rs.t.assign((size_t)size_.area(), 0);
+            rs.until.assign((size_t)size_.area(), 0);
+            rs.disparity.assign((size_t)size_.area(), -1.f);
+        }
+        frames_.configure(size_, minDisparity_, maxDisparity_, frameWindow_);
+        lastTime_ = std::numeric_limits<int64>::min();
+        candidate_.assign((size_t)(maxDisparity_ - minDisparity_ + 1), 0);
+        cost_.assign(candidate_.size(), 0);
+    }
+
+    void setCalibration(const StereoCalibration& calibration) CV_OVERRIDE
+    {
+        if (calibration.empty())
+        {
+            calibration_ = StereoCalibration();
+            for (std::vector<int>& l : lut_)
+                l.clear();
+            focalBaseline_ = 0;
+            reset();
+            return;
+        }
+        calibration.validate();
+        if (calibration.imageSize != size_)
+            CV_Error_(Error::StsBadArg, ("StereoEventMatcher: the calibration is for %d x %d sensors but the matcher's "
+                                         "sensor is %d x %d", calibration.imageSize.width, calibration.imageSize.height,
+                                         size_.width, size_.height));
+        Mat pixels(size_.area(), 1, CV_32FC2);
+        for (int y = 0; y < size_.height; y++)
+            for (int x = 0; x < size_.width; x++)
+                pixels.at<Vec2f>(y * size_.width + x) = Vec2f((float)x, (float)y);
+        for (int c = 0; c < 2; c++)
+        {
+            Mat rect;
+            calibration.rectifyPoints(pixels, rect, c);
+            lut_[c].resize((size_t)size_.area());
+            for (int i = 0; i < size_.area(); i++)
+            {
+                const Vec2f q = rect.at<Vec2f>(i);
+                const int x = cvRound(q[0]), y = cvRound(q[1]);
+                const bool inside = std::isfinite(q[0]) && std::isfinite(q[1]) && x >= 0 && y >= 0 && x < size_.width &&
+                                    y < size_.height;
+                lut_[c][(size_t)i] = inside ? y * size_.width + x : -1;
+            }
+        }
+        calibration_ = calibration;
+        focalBaseline_ = calibration.focalLength() * calibration.baseline();
+        reset();
+    }
+    const StereoCalibration& getCalibration() const CV_OVERRIDE { return calibration_; }
+    void loadCalibration(const String& path) CV_OVERRIDE { setCalibration(readStereoCalibration(path)); }
+
+    Ptr<LifetimeEstimator> getLifetimeEstimator(int camera) const CV_OVERRIDE
+    {
+        CV_CheckGE(camera, 0, "StereoEventMatcher::getLifetimeEstimator: camera is CAMERA_LEFT or CAMERA_RIGHT");
+        CV_CheckLE(camera, 1, "StereoEventMatcher::getLifetimeEstimator: camera is CAMERA_LEFT or CAMERA_RIGHT");
+        return estimators_[camera];
+    }
+
+    int getMode() const CV_OVERRIDE { return mode_; }
+    void setMode(int mode) CV_OVERRIDE
+    {
+        checkMode(mode);
+        mode_ = mode;
+        reset();
+    }
+    Size getSensorSize() const CV_OVERRIDE { return size_; }
+    void setSensorSize(Size s) CV_OVERRIDE
+    {
+        if (s.width <= 0 || s.height <= 0 || s.width > 32768 || s.height > 32768)
+            CV_Error_(Error::StsBadArg, ("StereoEventMatcher: sensor size %d x %d is not valid", s.width, s.height));
+        size_ = s;
+        for (const Ptr<LifetimeEstimator>& est : estimators_)
+            est->setSensorSize(s);
+        if (!calibration_.empty() && calibration_.imageSize != s)
+        {
+            calibration_ = StereoCalibration();
+            lut_[0].clear();
+            lut_[1].clear();
+            focalBaseline_ = 0;
+        }
+        reset();
+    }
+    int getMinDisparity() const CV_OVERRIDE { return minDisparity_; }
+    void setMinDisparity(int d) CV_OVERRIDE { setDisparityRange(d, maxDisparity_); }
+    int getMaxDisparity() const CV_OVERRIDE { return maxDisparity_; }
+    void setMaxDisparity(int d) CV_OVERRIDE { setDisparityRange(minDisparity_, d); }
+    int getDescriptorWindow() const CV_OVERRIDE { return descriptorWindow_; }
+    void setDescriptorWindow(int n) CV_OVERRIDE
+    {
+        descriptorWindow_ = oddWindow(n, 1, 15, "descriptor window");
+        reset();
+    }
+    int getMaxVectorLength() const CV_OVERRIDE { return maxVectorLength_; }
+    void setMaxVectorLength(int r) CV_OVERRIDE
+    {
+        if (r < 0 || r > 7)
+            CV_Error_(Error::StsBadArg, ("StereoEventMatcher: max vector length %d; must be 0..7 px", r));
+        maxVectorLength_ = r;
+        reset();
+    }
+    int getCostWindow() const CV_OVERRIDE { return costWindow_; }
+    void setCostWindow(int w) CV_OVERRIDE
+    {
+        costWindow_ = oddWindow(w, 1, 31, "cost window");
+        aggregationWindow_ = std::max(aggregationWindow_, costWindow_);
+        reset();
+    }
+    int getAggregationWindow() const CV_OVERRIDE { return aggregationWindow_; }
+    void setAggregationWindow(int a) CV_OVERRIDE
+    {
+        aggregationWindow_ = oddWindow(a, costWindow_, 31, "aggregation window (>= the cost window)");
+        reset();
+    }
+    int getUniquenessRatio() const CV_OVERRIDE { return uniquenessRatio_; }
+    void setUniquenessRatio(int u) CV_OVERRIDE
+    {
+        if (u < 0 || u > 99)
+            CV_Error_(Error::StsBadArg, ("StereoEventMatcher: uniqueness ratio %d; must be 0..99 %%", u));
+        uniquenessRatio_ = u;
+    }
+    double getFixedInterval() const CV_OVERRIDE { return (double)fixedInterval_; }
+    void setFixedInterval(double us) CV_OVERRIDE { fixedInterval_ = duration(us, "fixed interval"); }
+    double getFrameWindow() const CV_OVERRIDE { return (double)frameWindow_; }
+    void setFrameWindow(double us) CV_OVERRIDE
+    {
+        frameWindow_ = duration(us, "frame window");
+        reset();
+    }
+    double getMaxLifetime() const CV_OVERRIDE { return (double)maxLifetime_; }
+    void setMaxLifetime(double us) CV_OVERRIDE { maxLifetime_ = duration(us, "max lifetime"); }
+
+    void write(FileStorage& fs) const CV_OVERRIDE
+    {
+        writeFormat(fs);
+        fs << "mode" << getStereoModeName(mode_) << "sensorWidth" << size_.width << "sensorHeight" << size_.height
+           << "minDisparity" << minDisparity_ << "maxDisparity" << maxDisparity_ << "descriptorWindow" << descriptorWindow_
+           << "maxVectorLength" << maxVectorLength_ << "costWindow" << costWindow_ << "aggregationWindow"
+           << aggregationWindow_ << "uniquenessRatio" << uniquenessRatio_ << "fixedInterval" << (double)fixedInterval_
+           << "frameWindow" << (double)frameWindow_ << "maxLifetime" << (double)maxLifetime_;
+        fs << "lifetimeEstimator" << "{";
+        estimators_[0]->write(fs);
+        fs << "}";
+        if (!calibration_.empty())
+        {
+            fs << "calibration" << "{";
+            calibration_.write(fs);
+            fs << "}";
+        }
+    }
+
+    void read(const FileNode& fn) CV_OVERRIDE
+    {
+        auto num = [&](const char* key, double def) { return fn[key].empty() ? def : (double)fn[key]; };
+        if (!fn["mode"].empty())
+        {
+            const int m = findStereoMode((String)fn["mode"]);
+            if (m < 0)
+                CV_Error_(Error::StsParseError, ("StereoEventMatcher: unknown mode '%s'", ((String)fn["mode"]).c_str()));
+            checkMode(m);
+            mode_ = m;
+        }
+        const Size s((int)num("sensorWidth", size_.width), (int)num("sensorHeight", size_.height));
+        if (s != size_)
+            setSensorSize(s);
+        setDisparityRange((int)num("minDisparity", minDisparity_), (int)num("maxDisparity", maxDisparity_));
+        setDescriptorWindow((int)num("descriptorWindow", descriptorWindow_));
+        setMaxVectorLength((int)num("maxVectorLength", maxVectorLength_));
+        setCostWindow((int)num("costWindow", costWindow_));
+        setAggregationWindow((int)num("aggregationWindow", aggregationWindow_));
+        setUniquenessRatio((int)num("uniquenessRatio", uniquenessRatio_));
+        setFixedInterval(num("fixedInterval", (double)fixedInterval_));
+        setFrameWindow(num("frameWindow", (double)frameWindow_));
+        setMaxLifetime(num("maxLifetime", (double)maxLifetime_));
+        if (!fn["lifetimeEstimator"].empty())
+            for (const Ptr<LifetimeEstimator>& est : estimators_)
+                est->read(fn["lifetimeEstimator"]);
+        if (!fn["calibration"].empty())
+        {
+            StereoCalibration c;
+            const FileNode cn = fn["calibration"];
+            cn["imageSize"] >> c.imageSize;
+            c.fisheye = (int)cn["fisheye"] != 0;
+            cn["K1"] >> c.K1;
+            cn["D1"] >> c.D1;
+            cn["R1"] >> c.R1;
+            cn["P1"] >> c.P1;
+            cn["K2"] >> c.K2;
+            cn["D2"] >> c.D2;
+            cn["R2"] >> c.R2;
+            cn["P2"] >> c.P2;
+            setCalibration(c);
+        }
+        reset();
+    }
+
+    String getDefaultName() const CV_OVERRIDE { return "StereoEventMatcher"; }
+
+private:
+    struct RenderState
+    {
+        std::vector<int64> t, until;  // last event per pixel and the end of its activity
+        std::vector<float> disparity;
+    };
+
+    static void checkMode(int mode)
+    {
+        if (mode < STEREO_COUPLED || mode > STEREO_FRAME_SGBM)
+            CV_Error_(Error::StsBadArg, ("StereoEventMatcher: mode %d; use a StereoMatchMode (0..3)", mode));
+    }
+
+    static int oddWindow(int n, int lo, int hi, const char* what)
+    {
+        if (n < lo || n > hi || n % 2 == 0)
+            CV_Error_(Error::StsBadArg, ("StereoEventMatcher: %s %d; must be odd, %d..%d", what, n, lo, hi));
+        return n;
+    }
+
+    static int64 duration(double us, const char* what)
+    {
+        if (!(us >= 1) || us > 1e12)
+            CV_Error_(Error::StsBadArg, ("StereoEventMatcher: %s %g us; must be 1 us .. 1e12 us", what, us));
+        return (int64)std::llround(us);
+    }
+
+    void setDisparityRange(int lo, int hi)
+    {
+        if (lo < 0 || hi < lo || hi > 1024)
+            CV_Error_(Error::StsBadArg, ("StereoEventMatcher: disparity range [%d, %d]; need 0 <= min <= max <= 1024", lo, hi));
+        minDisparity_ = lo;
+        maxDisparity_ = hi;
+        reset();
+    }
+
+    // Checks the event (camera, sensor bounds, time order) and returns its rectified pixel, (-1, -1) when it
+    // falls outside the rectified image.
+    Point admit(const Event& e)
+    {
+        if (e.camera > 1)
+            CV_Error_(Error::StsBadArg, ("StereoEventMatcher: event (t=%lld us, x=%d, y=%d) has camera %d; a stereo "
+                                         "stream has CAMERA_LEFT (0) and CAMERA_RIGHT (1)", (long long)e.t, e.x, e.y, e.camera));
+        if ((unsigned)e.x >= (unsigned)size_.width || (unsigned)e.y >= (unsigned)size_.height)
+            CV_Error_(Error::StsOutOfRange, ("StereoEventMatcher: event at (x=%d, y=%d), t=%lld us, camera %d, is outside "
+                                             "the %d x %d sensor", e.x, e.y, (long long)e.t, e.camera, size_.width, size_.height));
+        if (e.t < lastTime_)
+            CV_Error_(Error::StsBadArg, ("StereoEventMatcher: event at t=%lld us (x=%d, y=%d, camera %d) is earlier than the "
+                                         "previous one (t=%lld us): events of both sensors must come merged in time order "
+                                         "(mergeStereoEvents, EventCapture::openStereo)", (long long)e.t, e.x, e.y,
+                                         e.camera, (long long)lastTime_));
+        lastTime_ = e.t;
+        if (lut_[e.camera].empty())
+            return Point(e.x, e.y);
+        const int r = lut_[e.camera][(size_t)e.y * size_.width + e.x];
+        return r < 0 ? Point(-1, -1) : Point(r % size_.width, r / size_.width);
+    }
+
+    // Sum over the rectangle [x0, x1] x [y0, y1] (relative to the event) of descriptor SADs, for every
+    // candidate disparity; returns the same sum against an empty map (the event's side alone).
+    unsigned addRect(const ZouDescriptorMap& self, const ZouDescriptorMap& other, Point r, int sign, int x0, int x1,
+                     int y0, int y1)
+    {
+        static const uchar zeros[ZouDescriptorMap::DESCRIPTOR_BYTES] = { 0 };
+        unsigned mass = 0;
+        for (int y = y0; y <= y1; y++)
+        {
+            const uchar* a = self.descriptor(r.x + x0, r.y + y);
+            for (int x = 0; x <= x1 - x0; x++)
+                mass += descriptorSad(a + (size_t)x * ZouDescriptorMap::DESCRIPTOR_BYTES, zeros);
+        }
+        for (size_t k = 0; k < candidate_.size(); k++)
+        {
+            if (!candidate_[k])
+                continue;
+            const int d = minDisparity_ + (int)k;
+            unsigned sum = 0;
+            for (int y = y0; y <= y1; y++)
+            {
+                const uchar* a = self.descriptor(r.x + x0, r.y + y);
+                const uchar* b = other.descriptor(r.x + x0 + sign * d, r.y + y);
+                for (int x = 0; x <= x1 - x0; x++)
+                    sum += descriptorSad(a + (size_t)x * ZouDescriptorMap::DESCRIPTOR_BYTES,
+                                         b + (size_t)x * ZouDescriptorMap::DESCRIPTOR_BYTES);
+            }
+            cost_[k] += sum;
+        }
+        return mass;
+    }
+
+    // Sum of the descriptor values in the (2h+1)^2 window around q.
+    static unsigned windowMass(const ZouDescriptorMap& map, Point q, int h)
+    {
+        static const uchar zeros[ZouDescriptorMap::DESCRIPTOR_BYTES] = { 0 };
+        unsigned mass = 0;
+        for (int y = -h; y <= h; y++)
+        {
+            const uchar* a = map.descriptor(q.x - h, q.y + y);
+            for (int x = 0; x <= 2 * h; x++)
+                mass += descriptorSad(a + (size_t)x * ZouDescriptorMap::DESCRIPTOR_BYTES, zeros);
+        }
+        return mass;
+    }
+
+    MatchResult match(int c, Point r, int p)
+    {
+        MatchResult m;
+        const ZouDescriptorMap& self = maps_[c];
+        const ZouDescriptorMap& other = maps_[1 - c];
+        const int sign = c == CAMERA_LEFT ? -1 : 1;  // left x_l matches right x_l - d; right x_r matches left x_r + d
+        bool any = false;
+        for (size_t k = 0; k < candidate_.size(); k++)
+        {
+            const int xo = r.x + sign * (minDisparity_ + (int)k);
+            candidate_[k] = (uchar)((unsigned)xo < (unsigned)size_.width && other.hasStructure(xo, r.y, p));
+            cost_[k] = 0;
+            any |= candidate_[k] != 0;
+        }
+        if (!any)
+        {
+            m.flags = STEREO_NO_COUNTERPART;
+            return m;
+        }
+        int h = costWindow_ / 2;
+        unsigned mass = addRect(self, other, r, sign, -h, h, -h, h);
+        const int n = (int)candidate_.size();
+        for (;;)
+        {
+            int best = -1;
+            for (int k = 0; k < n; k++)
+                if (candidate_[k] && (best < 0 || cost_[k] < cost_[best]))
+                    best = k;
+            unsigned second = std::numeric_limits<unsigned>::max();
+            for (int k = 0; k < n; k++)
+                if (candidate_[k] && std::abs(k - best) > 1)
+                    second = std::min(second, cost_[k]);
+            // Unique: clearly better than every candidate further than one pixel away, and better than no match.
+            bool unique = (uint64)cost_[best] * 100 < (uint64)second * (100 - uniquenessRatio_);
+            if (unique && cost_[best] >= mass)
+            {
+                // No better than matching against nothing from this side; the other side may simply hold more
+                // (a more sensitive sensor): compare with its mass too.
+                const int xo = r.x + sign * (minDisparity_ + best);
+                unique = cost_[best] < windowMass(other, Point(xo, r.y), h);
+            }
+            if (unique)
+            {
+                double d = minDisparity_ + best;
+                if (best > 0 && best < n - 1 && candidate_[best - 1] && candidate_[best + 1])
+                {
+                    const double cm = cost_[best - 1], c0 = cost_[best], cp = cost_[best + 1];
+                    const double denom = cm + cp - 2 * c0;
+                    if (denom > 0)
+                        d += std::max(-0.5, std::min(0.5, 0.5 * (cm - cp) / denom));
+                }
+                m.counterpartX = r.x + sign * (minDisparity_ + best);
+                if (!consistent(1 - c, m.counterpartX, r.y, d))
+                {
+                    m.flags = STEREO_AMBIGUOUS;
+                    return m;
+                }
+                m.disparity = (float)d;
+                return m;
+            }
+            if (h >= aggregationWindow_ / 2)
+                break;
+            // Iterative aggregation: add the ring one pixel further out.
+            h++;
+            mass += addRect(self, other, r, sign, -h, h, -h, -h);
+            mass += addRect(self, other, r, sign, -h, h, h, h);
+            mass += addRect(self, other, r, sign, -h, -h, -h + 1, h - 1);
+            mass += addRect(self, other, r, sign, h, h, -h + 1, h - 1);
+        }
+        m.flags = STEREO_AMBIGUOUS;
+        return m;
+    }
+
+    // Left-right check against the other sensor's own estimates: the active events around the counterpart
+    // were matched the other way (toward this sensor); when they have disparities, their median must agree
+    // within one pixel. Without any there is nothing to contradict the match.
+    bool consistent(int c, int x, int y, double d)
+    {
+        const RenderState& rs = render_[c];
+        disparities_.clear();
+        for (int yy = std::max(0, y - 1); yy <= std::min(size_.height - 1, y + 1); yy++)
+            for (int xx = std::max(0, x - 1); xx <= std::min(size_.width - 1, x + 1); xx++)
+            {
+                const size_t i = (size_t)yy * size_.width + xx;
+                if (rs.disparity[i] >= 0 && lastTime_ < rs.until[i])
+                    disparities_.push_back(rs.disparity[i]);
+            }
+        if (disparities_.empty())
+            return true;
+        const size_t mid = disparities_.size() / 2;
+        std::nth_element(disparities_.begin(), disparities_.begin() + (std::ptrdiff_t)mid, disparities_.end());
+        return std::abs(disparities_[mid] - d) <= 1.0;
+    }
+
+    // Median lifetime (and the flow of that event) of the active events of polarity p in the cost window
+    // around (x, y) of sensor c. False when none has a lifetime.
+    bool matchedLifetime(int c, int x, int y, int p, float& lifetime, Vec2f& flow)
+    {
+        const ZouDescriptorMap& map = maps_[c];
+        const int h = costWindow_ / 2;
+        neighbours_.clear();
+        for (int yy = std::max(0, y - h); yy <= std::min(size_.height - 1, y + h); yy++)
+            for (int xx = std::max(0, x - h); xx <= std::min(size_.width - 1, x + h); xx++)
+                if (map.isActive(xx, yy, p) && map.lifetime(xx, yy, p) > 0)
+                    neighbours_.push_back(Point(xx, yy));
+        if (neighbours_.empty())
+            return false;
+        const size_t mid = neighbours_.size() / 2;
+        std::nth_element(neighbours_.begin(), neighbours_.begin() + (std::ptrdiff_t)mid, neighbours_.end(),
+                         [&](const Point& a, const Point& b) { return map.lifetime(a.x, a.y, p) < map.lifetime(b.x, b.y, p); });
+        const Point q = neighbours_[mid];
+        lifetime = map.lifetime(q.x, q.y, p);
+        flow = map.flow(q.x, q.y, p);
+        return true;
+    }
+
+    void remember(int c, Point r, int64 t, int64 activeFor, float disparity)
+    {
+        RenderState& rs = render_[c];
+        const size_t i = (size_t)r.y * size_.width + r.x;
+        rs.t[i] = t;
+        rs.until[i] = t + activeFor;
+        rs.disparity[i] = disparity;
+    }
+
+    template <typename Store>
+    void processFrames(const Mat_<Event>& ev, Store& store)
+    {
+        const int n = (int)ev.total();
+        std::vector<Point> pixels((size_t)n);
+        std::vector<int64> times((size_t)n);
+        std::vector<uchar> cameras((size_t)n);
+        for (int i = 0; i < n; i++)
+        {
+            const Point r = admit(ev(i));
+            pixels[(size_t)i] = r;
+            times[(size_t)i] = ev(i).t;
+            cameras[(size_t)i] = r.x < 0 ? 255 : ev(i).camera;
+        }
+        std::vector<float> disparity;
+        frames_.process(pixels, times, cameras, disparity);
+        for (int i = 0; i < n; i++)
+        {
+            StereoEventEstimate s;
+            s.rectified = pixels[(size_t)i];
+            if (cameras[(size_t)i] > 1)
+                s.flags = STEREO_OUTSIDE;
+            else
+            {
+                s.disparity = disparity[(size_t)i];
+                if (s.disparity >= 0)
+                {
+                    s.flags = STEREO_HAS_DISPARITY;
+                    if (s.disparity > 0 && focalBaseline_ != 0)
+                        s.depth = (float)(focalBaseline_ / s.disparity);
+                }
+                remember(cameras[(size_t)i], s.rectified, times[(size_t)i], frameWindow_, s.disparity);
+            }
+            store(i, s);
+        }
+    }
+
+    Mat colourLut() const
+    {
+        Mat ramp(256, 1, CV_8U), lut;
+        for (int i = 0; i < 256; i++)
+            ramp.at<uchar>(i) = (uchar)i;
+        applyColorMap(ramp, lut, COLORMAP_JET);
+        return lut;
+    }
+
+    int colourIndex(float d) const
+    {
+        const double span = std::max(1, maxDisparity_ - minDisparity_);
+        return std::max(0, std::min(255, (int)std::lround((d - minDisparity_) / span * 255)));
+    }
+
+    Size size_;
+    int mode_ = STEREO_COUPLED;
+    int minDisparity_ = 0, maxDisparity_ = 40;
+    int descriptorWindow_ = 3, maxVectorLength_ = 3, costWindow_ = 9, aggregationWindow_ = 17, uniquenessRatio_ = 25;
+    int64 fixedInterval_ = 10000, frameWindow_ = 33000, maxLifetime_ = 100000;
+    StereoCalibration calibration_;
+    std::vector<int> lut_[2];  // raw pixel -> rectified pixel index (-1: outside); empty: no calibration
+    double focalBaseline_ = 0;
+    Ptr<LifetimeEstimator> estimators_[2];
+    ZouDescriptorMap maps_[2];
+    FrameSgbmMatcher frames_;
+    RenderState render_[2];
+    int64 lastTime_ = std::numeric_limits<int64>::min();
+    std::vector<uchar> candidate_;
+    std::vector<unsigned> cost_;
+    std::vector<Point> neighbours_;
+    std::vector<float> disparities_;
+};
+
+}  // namespace
+
+Ptr<StereoEventMatcher> StereoEventMatcher::create(Size sensorSize, int mode)
+{
+    return makePtr<StereoEventMatcherImpl>(sensorSize, mode);
+}
+
+String getStereoModeName(int mode)
+{
+    switch (mode)
+    {
+    case STEREO_COUPLED: return "coupled";
+    case STEREO_DECOUPLED: return "decoupled";
+    case STEREO_FIXED_INTERVAL: return "fixed";
+    case STEREO_FRAME_SGBM: return "sgbm";
+    default: CV_Error_(Error::StsBadArg, ("getStereoModeName: mode %d is not a StereoMatchMode", mode));
+    }
+}
+
+int findStereoMode(const String& name)
+{
+    const std::string n = detail::toLowerAscii(name);
+    for (int m = STEREO_COUPLED; m <= STEREO_FRAME_SGBM; m++)
+        if (n == getStereoModeName(m))
+            return m;
+    return -1;
+}
+
+}  // namespace event
+}  // namespace cv

@@ -1,0 +1,77 @@
+// This file is part of OpenCV project.
+// It is subject to the license terms in the LICENSE file found in the top-level directory
+// of this distribution and at http://opencv.org/license.html.
+
+#ifndef OPENCV_EVENT_ZOU_DESCRIPTOR_MAP_HPP
+#define OPENCV_EVENT_ZOU_DESCRIPTOR_MAP_HPP
+
+#include "expiry_heap.hpp"
+
+#include <vector>
+
+namespace cv {
+namespace event {
+
+/** The active events of one sensor and their Zou descriptors, maintained incrementally.
+
+Per pixel and polarity: whether an event is active there (with its time, lifetime and flow), and the
+vector to the nearest active event of that polarity within the maximum vector length, stored as an index
+into a table of offsets sorted by length (ties by angle), so "nearest" is "smallest index".
+Per pixel: the descriptor, 12 orientation bins of 30 degrees per polarity (bytes 0..11 OFF, 12..23 ON,
+24..31 zero so two 16-byte loads cover it), counting the vectors of the N x N window around the pixel; a
+pixel that is itself active votes into all 12 bins of its polarity.
+
+Activating an event can only shorten vectors within the maximum length of it; deactivating one
+re-searches only the pixels whose nearest event it was. Each vector change moves one vote in N x N
+descriptors. The descriptor map has a zero margin around the image so that cost windows can run past the
+border without checks. Expiry: an ExpiryHeap over pixel x polarity. */
+class ZouDescriptorMap
+{
+public:
+    enum { DESCRIPTOR_BYTES = 32, BINS = 12, NONE = 255 };
+
+    void configure(Size size, int descriptorWindow, int maxVectorLength, int margin);
+    void reset();
+
+    Size size() const { return size_; }
+    int margin() const { return margin_; }
+    // Descriptor of (x, y); valid for x, y within the margin around the image (zero outside it).
+    const uchar* descriptor(int x, int y) const
+    {
+        return &descriptors_[((size_t)(y + margin_) * stride_ + (size_t)(x + margin_)) * DESCRIPTOR_BYTES];
+    }
+    size_t descriptorRowStep() const { return (size_t)stride_ * DESCRIPTOR_BYTES; }
+
+    bool isActive(int x, int y, int p) const { return active_[id(x, y, p)] != 0; }
+    // An active event of polarity p lies within the maximum vector length of (x, y).
+    bool hasStructure(int x, int y, int p) const { return nearest_[id(x, y, p)] != NONE; }
+    float lifetime(int x, int y, int p) const { return lifetime_[id(x, y, p)]; }
+    Vec2f flow(int x, int y, int p) const { return flow_[id(x, y, p)]; }
+
+    // Makes the event at (x, y, p) the pixel's active one until expiry (exclusive) [us].
+    void activate(int x, int y, int p, int64 expiry, float lifetime, const Vec2f& flow);
+    void deactivate(int x, int y, int p);
+    // Deactivates every event whose expiry is <= t.
+    void expireUntil(int64 t);
+
+private:
+    int id(int x, int y, int p) const { return (p * size_.height + y) * size_.width + x; }
+    void deactivateId(int id);
+    int scanNearest(int x, int y, int p, int from) const;
+    void vote(int x, int y, int p, int code, int delta);
+
+    Size size_;
+    int window_ = 5, maxVectorLength_ = 3, margin_ = 0, stride_ = 0;
+    std::vector<Point> offsets_;  // candidate vectors to the nearest event, by length then angle
+    std::vector<uchar> bins_;     // orientation bin of each offset (offset 0 = the pixel itself: all bins)
+    std::vector<uchar> active_, nearest_;
+    std::vector<float> lifetime_;
+    std::vector<Vec2f> flow_;
+    std::vector<uchar> descriptors_;
+    ExpiryHeap expiry_;
+};
+
+}  // namespace event
+}  // namespace cv
+
+#endif  // OPENCV_EVENT_ZOU_DESCRIPTOR_MAP_HPP
