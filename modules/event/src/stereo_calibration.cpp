@@ -9,6 +9,10 @@
 
 #include "opencv2/calib3d.hpp"
 
+#include <fstream>
+#include <iterator>
+#include <sstream>
+
 namespace cv {
 namespace event {
 
@@ -138,6 +142,29 @@ StereoCalibration readKalibr(const FileStorage& fs, const String& path)
 
 StereoCalibration readOpenCV(const FileNode& root, const String& path);
 
+// PyYAML (hence Kalibr) writes a block sequence at the indentation of its key ("key:\n- [..]");
+// FileStorage's parser wants it deeper. Indents such items by two more spaces.
+std::string indentBlockSequences(const std::string& text)
+{
+    std::istringstream in(text);
+    std::ostringstream out;
+    std::string line;
+    size_t keyIndent = std::string::npos;  // indentation of the last "key:" line opening a block
+    while (std::getline(in, line))
+    {
+        const size_t indent = line.find_first_not_of(' ');
+        if (indent != std::string::npos && line.compare(indent, 2, "- ") == 0 && indent == keyIndent)
+            line = "  " + line;
+        else if (indent != std::string::npos)
+        {
+            const size_t end = line.find_last_not_of(" \r");
+            keyIndent = line[end] == ':' ? indent : std::string::npos;
+        }
+        out << line << "\n";
+    }
+    return out.str();
+}
+
 }  // namespace
 
 StereoCalibration StereoCalibration::fromRectified(Size imageSize, double f, double baseline)
@@ -228,10 +255,18 @@ void StereoCalibration::write(FileStorage& fs) const
 
 StereoCalibration readStereoCalibration(const String& path)
 {
+    std::ifstream in(path.c_str(), std::ios::binary);
+    if (!in)
+        CV_Error_(Error::StsError, ("%s: cannot open the calibration file", path.c_str()));
+    std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
     FileStorage fs;
     try
     {
-        fs.open(path, FileStorage::READ);
+        // Kalibr writes YAML without the "%YAML:1.0" directive FileStorage wants: add it when missing.
+        const bool yaml = text.compare(0, 1, "<") != 0 && text.compare(0, 1, "{") != 0;
+        if (yaml && text.compare(0, 5, "%YAML") != 0)
+            text = "%YAML:1.0\n" + indentBlockSequences(text);
+        fs.open(text, FileStorage::READ | FileStorage::MEMORY);
     }
     catch (const cv::Exception& e)
     {

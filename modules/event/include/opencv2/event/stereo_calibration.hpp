@@ -27,11 +27,17 @@ the fields set directly. */
 struct CV_EXPORTS_W_SIMPLE StereoCalibration
 {
     CV_PROP_RW Size imageSize;  //!< sensor size of both cameras (raw and rectified images share it)
-    CV_PROP_RW Mat K1, D1, R1, P1;  //!< left: 3x3 intrinsics, distortion, 3x3 rectifying rotation, 3x4 projection
-    CV_PROP_RW Mat K2, D2, R2, P2;  //!< right: the same
-    CV_PROP_RW bool fisheye = false;  //!< D1 / D2 are equidistant (cv::fisheye) coefficients k1..k4
+    CV_PROP_RW Mat K1;  //!< left camera: 3x3 intrinsics
+    CV_PROP_RW Mat D1;  //!< left camera: distortion coefficients
+    CV_PROP_RW Mat R1;  //!< left camera: 3x3 rectifying rotation
+    CV_PROP_RW Mat P1;  //!< left camera: 3x4 projection in the rectified frame
+    CV_PROP_RW Mat K2;  //!< right camera: 3x3 intrinsics
+    CV_PROP_RW Mat D2;  //!< right camera: distortion coefficients
+    CV_PROP_RW Mat R2;  //!< right camera: 3x3 rectifying rotation
+    CV_PROP_RW Mat P2;  //!< right camera: 3x4 projection in the rectified frame (P2(0,3) = -f B)
+    CV_PROP_RW bool fisheye;  //!< D1 / D2 are equidistant (cv::fisheye) coefficients k1..k4
 
-    CV_WRAP StereoCalibration() {}
+    CV_WRAP StereoCalibration() : fisheye(false) {}
 
     /** @brief A pair that needs no rectification (identity rotation, no distortion): both cameras have focal
     length @p focalLength [px] and the principal point at the image centre, the right camera @p baseline [m]

@@ -1,0 +1,318 @@
+// This file is part of OpenCV project.
+// It is subject to the license terms in the LICENSE file found in the top-level directory
+// of this distribution and at http://opencv.org/license.html.
+
+#include "test_precomp.hpp"
+
+namespace opencv_test { namespace {
+
+// A rectified pair watching one vertical edge move right at `speed` px/s: the left pixel (x, y) fires an ON
+// event when the edge reaches it, its right counterpart (x - disparity, y) `rightDelayUs` later (negative:
+// earlier). Closed form: every event's disparity is `disparity`, its lifetime 1e6 / speed.
+std::vector<Event> edgePair(Size size, int disparity, double speed, int64 rightDelayUs)
+{
+    std::vector<Event> ev;
+    const int64 start = 100000;
+    for (int x = 0; x < size.width; x++)
+        for (int y = 0; y < size.height; y++)
+        {
+            const int64 t = start + (int64)std::llround(x * 1e6 / speed);
+            ev.push_back(Event(t, x, y, POLARITY_ON, CAMERA_LEFT));
+            if (x - disparity >= 0)
+                ev.push_back(Event(t + rightDelayUs, x - disparity, y, POLARITY_ON, CAMERA_RIGHT));
+        }
+    std::stable_sort(ev.begin(), ev.end(), [](const Event& a, const Event& b) { return a.t < b.t; });
+    return ev;
+}
+
+struct Accuracy
+{
+    double density = 0, within1 = 0, meanAbsError = 0, depthError = 0;
+    int64 lifetimes[2] = { 0, 0 };
+};
+
+// Runs a matcher on `ms` of a simulated scene; accuracy over non-occluded signal events.
+Accuracy simulate(const std::string& scene, int mode, double ms)
+{
+    Ptr<StereoEventSimulator> sim = StereoEventSimulator::create(scene);
+    Ptr<StereoEventMatcher> m = StereoEventMatcher::create(sim->getSensorSize(), mode);
+    m->setCalibration(StereoCalibration::fromRectified(sim->getSensorSize(), sim->getSettings().focalLength,
+                                                       sim->getSettings().baseline));
+    Accuracy a;
+    int64 candidates = 0, estimated = 0, within1 = 0;
+    double absError = 0, depthError = 0;
+    std::vector<Event> ev;
+    Mat gt, d, lt, fl, depth;
+    for (double t = 33000; t <= ms * 1000 + 1; t += 33000)  // windows: what FRAME_SGBM needs, the same for all
+    {
+        sim->generate(t, ev, gt);
+        m->process(ev, d, lt, fl, depth);
+        for (int i = 0; i < (int)ev.size(); i++)
+        {
+            const int flags = (int)gt.at<float>(i, GT_FLAGS);
+            if (fl.at<int>(i) & STEREO_HAS_LIFETIME)
+                a.lifetimes[ev[(size_t)i].camera]++;
+            if (flags & (GT_FLAG_NOISE | GT_FLAG_OCCLUDED))
+                continue;
+            candidates++;
+            if (d.at<float>(i) < 0)
+                continue;
+            estimated++;
+            const double err = std::abs(d.at<float>(i) - gt.at<float>(i, GT_DISPARITY));
+            within1 += err <= 1;
+            absError += err;
+            depthError += std::abs(depth.at<float>(i) - gt.at<float>(i, GT_DEPTH)) / gt.at<float>(i, GT_DEPTH);
+        }
+    }
+    a.density = 100.0 * (double)estimated / (double)std::max<int64>(1, candidates);
+    a.within1 = 100.0 * (double)within1 / (double)std::max<int64>(1, estimated);
+    a.meanAbsError = absError / (double)std::max<int64>(1, estimated);
+    a.depthError = depthError / (double)std::max<int64>(1, estimated);
+    return a;
+}
+
+typedef testing::TestWithParam<tuple<int, int>> StereoEventMatcher_Edge;
+
+TEST_P(StereoEventMatcher_Edge, closed_form_disparity_and_lifetime_whichever_sensor_fires_first)
+{
+    const int mode = get<0>(GetParam());
+    const int64 rightDelay = get<1>(GetParam());
+    const Size size(64, 24);
+    const double speed = 500;  // px/s: lifetime 2000 us
+    const std::vector<Event> ev = edgePair(size, 12, speed, rightDelay);
+    Ptr<StereoEventMatcher> m = StereoEventMatcher::create(size, mode);
+    Mat d, lt, fl;
+    m->process(ev, d, lt, fl);
+    int counted[2] = { 0, 0 }, matched[2] = { 0, 0 }, withLifetime = 0;
+    double maxError = 0, lifetimeError = 0;
+    for (int i = 0; i < (int)ev.size(); i++)
+    {
+        const Event& e = ev[(size_t)i];
+        // Away from the sensor borders and the start, where the edge has not yet shown in the other sensor.
+        if (e.y < 5 || e.y >= size.height - 5 || (e.camera == CAMERA_LEFT ? e.x < 12 + 10 : e.x < 10) ||
+            e.x >= size.width - 20)
+            continue;
+        counted[e.camera]++;
+        const float di = d.at<float>(i);
+        if (di >= 0)
+        {
+            matched[e.camera]++;
+            maxError = std::max(maxError, (double)std::abs(di - 12));
+        }
+        if (mode != STEREO_FIXED_INTERVAL && lt.at<float>(i) > 0)
+        {
+            withLifetime++;
+            lifetimeError = std::max(lifetimeError, std::abs(lt.at<float>(i) - 2000.0) / 2000.0);
+        }
+    }
+    for (int c = 0; c < 2; c++)
+        EXPECT_GE(matched[c], 0.9 * counted[c]) << "camera " << c << ": " << matched[c] << " of " << counted[c] << " matched";
+    EXPECT_LE(maxError, 1.0);
+    if (mode == STEREO_FIXED_INTERVAL)
+        EXPECT_EQ(withLifetime, 0);
+    else
+    {
+        EXPECT_GE(withLifetime, 0.9 * (counted[0] + counted[1]));
+        EXPECT_LE(lifetimeError, 0.05);
+    }
+}
+
+INSTANTIATE_TEST_CASE_P(/**/, StereoEventMatcher_Edge,
+                        testing::Combine(testing::Values((int)STEREO_COUPLED, (int)STEREO_DECOUPLED, (int)STEREO_FIXED_INTERVAL),
+                                         testing::Values(300, -300)));
+
+// The acceptance on the textured scenes: >= 95 % of estimates within 1 px, >= 80 % of the
+// non-occluded signal events estimated; depth = f B / d from the calibration within 5 %.
+TEST(StereoEventMatcher, textured_scenes_meet_the_accuracy_and_density_targets)
+{
+    for (const char* scene : { "plane", "two_planes" })
+    {
+        const Accuracy a = simulate(scene, STEREO_COUPLED, 264);
+        EXPECT_GE(a.within1, 95.0) << scene;
+        EXPECT_GE(a.density, 80.0) << scene;
+        EXPECT_LE(a.depthError, 0.05) << scene;
+        std::cout << scene << ": density " << a.density << " %, within 1 px " << a.within1 << " %, MAE " << a.meanAbsError
+                  << " px, depth error " << 100 * a.depthError << " %" << std::endl;
+    }
+}
+
+// What users do today (frames + SGBM) on the occlusion scene: COUPLED estimates more events (higher
+// density), gets at least 5 points more of all non-occluded events right (within 1 px), and its estimates
+// are as precise (share within 1 px no more than 0.5 points below SGBM's; measured: equal).
+TEST(StereoEventMatcher, coupled_beats_frame_sgbm_on_two_planes)
+{
+    const Accuracy coupled = simulate("two_planes", STEREO_COUPLED, 264);
+    const Accuracy sgbm = simulate("two_planes", STEREO_FRAME_SGBM, 264);
+    std::cout << "coupled: density " << coupled.density << " %, within 1 px " << coupled.within1 << " %; sgbm: density "
+              << sgbm.density << " %, within 1 px " << sgbm.within1 << " %" << std::endl;
+    EXPECT_GE(coupled.density, sgbm.density);
+    EXPECT_GE(coupled.density * coupled.within1 / 100, sgbm.density * sgbm.within1 / 100 + 5);
+    EXPECT_GE(coupled.within1, sgbm.within1 - 0.5);
+}
+
+// The paper's Figure 4: with a less sensitive right sensor, its events are too sparse for plane fits;
+// matched to the other sensor they still get a lifetime. COUPLED must give >= 20 % more of them one.
+TEST(StereoEventMatcher, coupled_gives_the_weak_sensor_more_lifetimes_than_decoupled)
+{
+    const Accuracy coupled = simulate("faint_line", STEREO_COUPLED, 297);
+    const Accuracy decoupled = simulate("faint_line", STEREO_DECOUPLED, 297);
+    std::cout << "right-sensor events with a lifetime: coupled " << coupled.lifetimes[1] << ", decoupled "
+              << decoupled.lifetimes[1] << std::endl;
+    EXPECT_GE((double)coupled.lifetimes[1], 1.2 * (double)decoupled.lifetimes[1]);
+    EXPECT_GE(coupled.lifetimes[0], decoupled.lifetimes[0]);  // the strong sensor loses nothing
+}
+
+TEST(StereoEventMatcher, tum_fan_has_a_dominant_disparity_of_8_px)
+{
+    const std::string path = requireSharedData("stereo_dvs128_tum/Fan_disp8.dat");
+    EventCapture cap;
+    cap.set(EVENT_CAP_PROP_TEXT_LEFT_CAMERA_VALUE, 1);  // TUM: retina 1 is the left camera
+    cap.set(EVENT_CAP_PROP_SENSOR_WIDTH, 128);
+    cap.set(EVENT_CAP_PROP_SENSOR_HEIGHT, 128);
+    ASSERT_TRUE(cap.open(path));
+    const std::vector<Event> ev = readAllEvents(cap);
+    Ptr<StereoEventMatcher> m = StereoEventMatcher::create(Size(128, 128));
+    Mat d;
+    m->process(ev, d);
+    std::vector<int> votes(41, 0);
+    int estimated = 0;
+    for (int i = 0; i < d.rows; i++)
+        if (d.at<float>(i) >= 0)
+        {
+            votes[(size_t)std::lround(d.at<float>(i))]++;
+            estimated++;
+        }
+    const int dominant = (int)(std::max_element(votes.begin(), votes.end()) - votes.begin());
+    EXPECT_NEAR(dominant, 8, 1);
+    EXPECT_GE(estimated, d.rows / 5);
+}
+
+TEST(StereoEventMatcher, process_and_processEvent_agree_and_runs_repeat)
+{
+    Ptr<StereoEventSimulator> sim = StereoEventSimulator::create("cluttered");
+    std::vector<Event> ev;
+    Mat gt;
+    sim->generate(60000, ev, gt);
+    for (int mode : { (int)STEREO_COUPLED, (int)STEREO_DECOUPLED, (int)STEREO_FIXED_INTERVAL })
+    {
+        Ptr<StereoEventMatcher> batch = StereoEventMatcher::create(sim->getSensorSize(), mode);
+        Ptr<StereoEventMatcher> single = StereoEventMatcher::create(sim->getSensorSize(), mode);
+        Mat d, lt, fl;
+        batch->process(ev, d, lt, fl);
+        StereoEventEstimate s;
+        int differ = 0;
+        for (int i = 0; i < (int)ev.size(); i++)
+        {
+            single->processEvent(ev[(size_t)i], s);
+            differ += s.disparity != d.at<float>(i) || s.lifetime != lt.at<float>(i) || s.flags != fl.at<int>(i);
+        }
+        EXPECT_EQ(differ, 0) << getStereoModeName(mode);
+        batch->reset();
+        Mat d2;
+        batch->process(ev, d2);
+        EXPECT_EQ(cvtest::norm(d, d2, NORM_INF), 0) << getStereoModeName(mode) << ": a reset run differs";
+    }
+}
+
+TEST(StereoEventMatcher, bad_input_raises_errors_that_name_the_event)
+{
+    Ptr<StereoEventMatcher> m = StereoEventMatcher::create(Size(64, 48));
+    auto message = [&](const std::vector<Event>& ev) -> std::string {
+        m->reset();
+        try
+        {
+            Mat d;
+            m->process(ev, d);
+        }
+        catch (const cv::Exception& e)
+        {
+            return e.what();
+        }
+        return "";
+    };
+    const std::string back = message({ Event(2000, 1, 1, 1, 0), Event(1000, 2, 2, 1, 1) });
+    EXPECT_NE(back.find("t=1000"), std::string::npos) << back;
+    EXPECT_NE(back.find("time order"), std::string::npos) << back;
+    const std::string outside = message({ Event(1000, 64, 1, 1, 0) });
+    EXPECT_NE(outside.find("x=64"), std::string::npos) << outside;
+    EXPECT_NE(outside.find("64 x 48"), std::string::npos) << outside;
+    const std::string camera = message({ Event(1000, 1, 1, 1, 2) });
+    EXPECT_NE(camera.find("camera 2"), std::string::npos) << camera;
+
+    m->setMode(STEREO_FRAME_SGBM);
+    StereoEventEstimate s;
+    EXPECT_THROW(m->processEvent(Event(1000, 1, 1, 1, 0), s), cv::Exception);
+    EXPECT_THROW(m->setMaxDisparity(-1), cv::Exception);
+    EXPECT_THROW(m->setCostWindow(4), cv::Exception);
+    EXPECT_THROW(m->setMode(7), cv::Exception);
+    EXPECT_THROW(m->setCalibration(StereoCalibration::fromRectified(Size(240, 180), 200, 0.1)), cv::Exception);
+}
+
+TEST(StereoEventMatcher, parameters_round_trip_through_FileStorage)
+{
+    Ptr<StereoEventMatcher> a = StereoEventMatcher::create(Size(128, 96), STEREO_DECOUPLED);
+    a->setMinDisparity(2);
+    a->setMaxDisparity(30);
+    a->setDescriptorWindow(5);
+    a->setMaxVectorLength(2);
+    a->setCostWindow(7);
+    a->setAggregationWindow(13);
+    a->setUniquenessRatio(15);
+    a->setFixedInterval(5000);
+    a->getLifetimeEstimator(0)->setWindowSize(7);
+    a->setCalibration(StereoCalibration::fromRectified(Size(128, 96), 150, 0.2));
+    FileStorage out(".yml", FileStorage::WRITE | FileStorage::MEMORY);
+    a->write(out);
+    const std::string text = out.releaseAndGetString();
+    Ptr<StereoEventMatcher> b = StereoEventMatcher::create();
+    b->read(FileStorage(text, FileStorage::READ | FileStorage::MEMORY).root());
+    EXPECT_EQ(b->getMode(), (int)STEREO_DECOUPLED);
+    EXPECT_EQ(b->getSensorSize(), Size(128, 96));
+    EXPECT_EQ(b->getMinDisparity(), 2);
+    EXPECT_EQ(b->getMaxDisparity(), 30);
+    EXPECT_EQ(b->getDescriptorWindow(), 5);
+    EXPECT_EQ(b->getMaxVectorLength(), 2);
+    EXPECT_EQ(b->getCostWindow(), 7);
+    EXPECT_EQ(b->getAggregationWindow(), 13);
+    EXPECT_EQ(b->getUniquenessRatio(), 15);
+    EXPECT_EQ(b->getFixedInterval(), 5000);
+    EXPECT_EQ(b->getLifetimeEstimator(1)->getWindowSize(), 7);
+    EXPECT_DOUBLE_EQ(b->getCalibration().baseline(), 0.2);
+}
+
+TEST(StereoEventMatcher, renderDisparity_colours_active_events_and_leaves_the_rest_black)
+{
+    const Size size(64, 24);
+    Ptr<StereoEventMatcher> m = StereoEventMatcher::create(size, STEREO_FIXED_INTERVAL);
+    const std::vector<Event> ev = edgePair(size, 12, 500, 300);
+    StereoEventEstimate s;
+    Point lastMatched(-1, -1);
+    float lastDisparity = -1;
+    for (const Event& e : ev)
+    {
+        m->processEvent(e, s);
+        if (e.camera == CAMERA_LEFT && s.disparity >= 0)
+        {
+            lastMatched = Point(e.x, e.y);
+            lastDisparity = s.disparity;
+        }
+    }
+    ASSERT_GE(lastDisparity, 0.f);
+    const double t = (double)ev.back().t;
+    Mat img, plain;
+    m->renderDisparity(t, img, CAMERA_LEFT, true);
+    m->renderDisparity(t, plain, CAMERA_LEFT, false);
+    EXPECT_EQ(img.type(), CV_8UC3);
+    EXPECT_GT(img.cols, size.width);
+    EXPECT_EQ(plain.size(), size);
+    // The last matched pixel has JET's colour for its disparity; long-expired pixels (10 ms) are black.
+    Mat ramp(1, 1, CV_8U, Scalar(cvRound(lastDisparity / 40.0 * 255))), colour;
+    applyColorMap(ramp, colour, COLORMAP_JET);
+    EXPECT_EQ(plain.at<Vec3b>(lastMatched), colour.at<Vec3b>(0));
+    EXPECT_EQ(plain.at<Vec3b>(12, 0), Vec3b(0, 0, 0));
+    Mat later;
+    m->renderDisparity(t + 20000, later, CAMERA_LEFT, false);
+    EXPECT_EQ(countNonZero(later.reshape(1)), 0);
+}
+
+}}  // namespace
