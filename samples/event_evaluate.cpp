@@ -1,14 +1,14 @@
 // event_evaluate: runs a stereo method on a recording with per-event ground truth and writes a report.
 //
 //   event_evaluate [--scene NAME --duration-ms MS | --input REC [--gt REC.gt.csv]] [--method sgbm]
-//                  [--window-ms 33] [--output DIR]       methods: sgbm, lifetime
+//                  [--window-ms 33] [--output DIR] [--set PARAM=VALUE ...]
+//   methods: coupled, decoupled, fixed, sgbm (StereoEventMatcher modes), lifetime
 //
 // Ground truth comes from the simulator (a named scene, simulated in memory) or from the side file that
 // writeSimulatedRecording() writes (`t,x,y,p,camera,depth,disparity,flow_x,flow_y,lifetime,flags`).
-// Methods: `sgbm` = what users do today (dv-processing's semi-dense matcher): accumulate each camera's events
-// of a window into an edge frame, run cv::StereoSGBM, give every event its pixel's disparity. The paper's
-// methods join as the stereo matcher lands. `lifetime` = LifetimeEstimator per camera (lifetime and noise
-// metrics, no disparity).
+// Methods: the StereoEventMatcher modes (`sgbm` = what users do today, dv-processing's semi-dense matcher:
+// edge frames per window + cv::StereoSGBM), with --set for matcher parameters (FileStorage names, e.g.
+// uniquenessRatio=20); `lifetime` = LifetimeEstimator per camera (lifetime and noise metrics, no disparity).
 //
 // Writes DIR/report.md and DIR/metrics.csv (disparity density, share within 1 px, mean absolute disparity
 // error, relative depth error, lifetime median relative error, noise precision / recall, events with a

@@ -50,4 +50,28 @@ assert not ok
 merged = ev.mergeStereoEvents(packet, packet)
 tm, xm, ym, pm, cm = ev.unpackEvents(merged)
 assert list(cm.ravel()) == [0, 1, 0, 1, 0, 1]
+# StereoEventMatcher on a closed-form pair: one vertical edge at 500 px/s on a 64 x 24 rectified pair,
+# the right view 12 px to the left: matched events get disparity 12 (within 1 px), depth f B / 12.
+events = []
+for x in range(64):
+    for y in range(24):
+        t = 100000 + x * 2000
+        events.append((t, x, y, 0))
+        if x >= 12:
+            events.append((t + 300, x - 12, y, 1))
+events.sort(key=lambda e: e[0])
+arr = np.array(events, dtype=np.float64)
+stereo = ev.packEvents(arr[:, 0], arr[:, 1].astype(np.int32), arr[:, 2].astype(np.int32),
+                       np.ones(len(arr), np.int32), camera=arr[:, 3].astype(np.int32))
+matcher = ev.StereoEventMatcher_create((64, 24), ev.STEREO_COUPLED)
+calib = ev.StereoCalibration_fromRectified((64, 24), 100.0, 0.1)
+assert abs(calib.baseline() - 0.1) < 1e-12 and calib.P2.shape == (3, 4)
+matcher.setMaxDisparity(30)
+disparity, lifetime, flags, depth, flow = matcher.process(stereo)
+found = disparity.ravel() >= 0
+assert found.sum() > len(events) // 2, found.sum()
+assert np.all(np.abs(disparity.ravel()[found] - 12) <= 1)
+assert ev.getStereoModeName(ev.STEREO_DECOUPLED) == "decoupled" and ev.findStereoMode("SGBM") == ev.STEREO_FRAME_SGBM
+picture = matcher.renderDisparity(float(events[-1][0]))
+assert picture.shape[0] == 24 and picture.shape[2] == 3
 print("python bindings: cv2.event OK")

@@ -1,0 +1,33 @@
+// This file is part of OpenCV project.
+// It is subject to the license terms in the LICENSE file found in the top-level directory
+// of this distribution and at http://opencv.org/license.html.
+
+#include "perf_precomp.hpp"
+
+namespace opencv_test { namespace {
+
+// The whole stereo pipeline per mode on one 33 ms window of the simulator's two_planes scene (240 x 180),
+// after 66 ms of warm-up so that the descriptors and lifetimes are in their steady state. Divide by the
+// window's event count (printed by the Table I program, perf/event_stereo_table) for time per event.
+typedef TestBaseWithParam<int> Event_StereoMatcher_Window;
+
+PERF_TEST_P(Event_StereoMatcher_Window, two_planes,
+            testing::Values((int)STEREO_COUPLED, (int)STEREO_DECOUPLED, (int)STEREO_FIXED_INTERVAL, (int)STEREO_FRAME_SGBM))
+{
+    Ptr<StereoEventSimulator> sim = StereoEventSimulator::create("two_planes");
+    std::vector<Event> warmUp, window;
+    Mat gt;
+    sim->generate(66000, warmUp, gt);
+    sim->generate(99000, window, gt);
+    Ptr<StereoEventMatcher> m = StereoEventMatcher::create(sim->getSensorSize(), GetParam());
+    Mat disparity, lifetime;
+    TEST_CYCLE()
+    {
+        m->reset();
+        m->process(warmUp, disparity, lifetime);
+        m->process(window, disparity, lifetime);
+    }
+    SANITY_CHECK_NOTHING();
+}
+
+}} // namespace
