@@ -247,6 +247,20 @@ void StereoCalibration::rectifyPoints(InputArray points, OutputArray rectified, 
     out.convertTo(rectified, CV_32FC2);
 }
 
+void StereoCalibration::read(const FileNode& node, const String& source)
+{
+    StereoCalibration c = readOpenCV(node, source);
+    try
+    {
+        c.validate();
+    }
+    catch (const cv::Exception& e)
+    {
+        CV_Error_(Error::StsParseError, ("%s: %s", source.c_str(), e.err.c_str()));
+    }
+    *this = c;
+}
+
 void StereoCalibration::write(FileStorage& fs) const
 {
     fs << "imageSize" << imageSize << "fisheye" << (int)fisheye << "K1" << K1 << "D1" << D1 << "R1" << R1 << "P1" << P1
@@ -275,11 +289,12 @@ StereoCalibration readStereoCalibration(const String& path)
     if (!fs.isOpened())
         CV_Error_(Error::StsError, ("%s: cannot open the calibration file", path.c_str()));
     StereoCalibration c;
-    const FileNode root = fs.root();
-    if (fs["cam0"].isMap())
-        c = readKalibr(fs, path);
-    else
-        c = readOpenCV(root, path);
+    if (!fs["cam0"].isMap())
+    {
+        c.read(fs.root(), path);
+        return c;
+    }
+    c = readKalibr(fs, path);
     try
     {
         c.validate();

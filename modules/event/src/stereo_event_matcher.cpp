@@ -401,17 +401,7 @@ public:
         if (!fn["calibration"].empty())
         {
             StereoCalibration c;
-            const FileNode cn = fn["calibration"];
-            cn["imageSize"] >> c.imageSize;
-            c.fisheye = (int)cn["fisheye"] != 0;
-            cn["K1"] >> c.K1;
-            cn["D1"] >> c.D1;
-            cn["R1"] >> c.R1;
-            cn["P1"] >> c.P1;
-            cn["K2"] >> c.K2;
-            cn["D2"] >> c.D2;
-            cn["R2"] >> c.R2;
-            cn["P2"] >> c.P2;
+            c.read(fn["calibration"], "StereoEventMatcher calibration");
             setCalibration(c);
         }
         reset();
@@ -482,14 +472,7 @@ private:
     unsigned addRect(const ZouDescriptorMap& self, const ZouDescriptorMap& other, Point r, int sign, int x0, int x1,
                      int y0, int y1)
     {
-        static const uchar zeros[ZouDescriptorMap::DESCRIPTOR_BYTES] = { 0 };
-        unsigned mass = 0;
-        for (int y = y0; y <= y1; y++)
-        {
-            const uchar* a = self.descriptor(r.x + x0, r.y + y);
-            for (int x = 0; x <= x1 - x0; x++)
-                mass += descriptorSad(a + (size_t)x * ZouDescriptorMap::DESCRIPTOR_BYTES, zeros);
-        }
+        const unsigned mass = rectMass(self, r, x0, x1, y0, y1);
         for (size_t k = 0; k < candidate_.size(); k++)
         {
             if (!candidate_[k])
@@ -509,15 +492,15 @@ private:
         return mass;
     }
 
-    // Sum of the descriptor values in the (2h+1)^2 window around q.
-    static unsigned windowMass(const ZouDescriptorMap& map, Point q, int h)
+    // Sum of the descriptor values over [x0, x1] x [y0, y1] relative to q: the cost of matching against nothing.
+    static unsigned rectMass(const ZouDescriptorMap& map, Point q, int x0, int x1, int y0, int y1)
     {
         static const uchar zeros[ZouDescriptorMap::DESCRIPTOR_BYTES] = { 0 };
         unsigned mass = 0;
-        for (int y = -h; y <= h; y++)
+        for (int y = y0; y <= y1; y++)
         {
-            const uchar* a = map.descriptor(q.x - h, q.y + y);
-            for (int x = 0; x <= 2 * h; x++)
+            const uchar* a = map.descriptor(q.x + x0, q.y + y);
+            for (int x = 0; x <= x1 - x0; x++)
                 mass += descriptorSad(a + (size_t)x * ZouDescriptorMap::DESCRIPTOR_BYTES, zeros);
         }
         return mass;
@@ -562,7 +545,7 @@ private:
                 // No better than matching against nothing from this side; the other side may simply hold more
                 // (a more sensitive sensor): compare with its mass too.
                 const int xo = r.x + sign * (minDisparity_ + best);
-                unique = cost_[best] < windowMass(other, Point(xo, r.y), h);
+                unique = cost_[best] < rectMass(other, Point(xo, r.y), -h, h, -h, h);
             }
             if (unique)
             {

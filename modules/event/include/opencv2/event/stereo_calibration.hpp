@@ -59,6 +59,9 @@ struct CV_EXPORTS_W_SIMPLE StereoCalibration
 
     /** @brief Writes K1 D1 R1 P1 K2 D2 R2 P2, imageSize and fisheye under the current node. */
     void write(FileStorage& fs) const;
+    /** @brief Reads what write() writes (or any OpenCV form readStereoCalibration() accepts) from @p node,
+    and validates it; errors name @p source. */
+    void read(const FileNode& node, const String& source = "calibration node");
 };
 
 /** @brief Reads a stereo calibration file; the kind is recognised from the keys.
