@@ -92,6 +92,8 @@ Named scenes (create()):
 - "two_planes": a textured foreground plane sliding over a textured background twice as far (occlusion);
 - "moving_line": a single thin bright line moving over a dark background; the right camera is 1.6x less
   sensitive (the paper's asymmetric-sensitivity case);
+- "faint_line": the same with a faint line (log contrast at the weak sensor's threshold), so the right camera
+  fires at only part of its pixels (the paper's Figure 4 case);
 - "cluttered": several textured planes at different depths, translating and rotating, with background
   activity noise.
 */

@@ -1,9 +1,10 @@
-# ctest `event_stereo_*`: runs the main-job sample and checks its summary.md: the dominant disparity against
-# the known value (simulated: f * B / Z of the foreground plane; TUM Fan: 8 px, shared/data/README.md), and,
-# when simulated, the ground-truth accuracy (MIN_WITHIN1 % of estimates within 1 px, MIN_DENSITY %).
-foreach(v SAMPLE OUTPUT_DIR EXPECTED_DISPARITY)
+# ctests `event_stereo_*` and `stereo_overview_*`: runs a stereo sample and checks its summary.md: the
+# dominant disparity against the known value (simulated: f * B / Z of the foreground plane; TUM Fan: 8 px,
+# shared/data/README.md); optionally the ground-truth accuracy (MIN_WITHIN1 % of estimates within 1 px,
+# MIN_DENSITY %); and that the files REQUIRED_FILES names were written.
+foreach(v SAMPLE OUTPUT_DIR EXPECTED_DISPARITY REQUIRED_FILES)
   if(NOT DEFINED ${v})
-    message(FATAL_ERROR "event_stereo.cmake: ${v} not set")
+    message(FATAL_ERROR "stereo_sample.cmake: ${v} not set")
   endif()
 endforeach()
 file(REMOVE_RECURSE "${OUTPUT_DIR}")
@@ -19,10 +20,10 @@ list(APPEND args ${EXTRA_ARGS})
 execute_process(COMMAND "${SAMPLE}" ${args} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
 message("${out}")
 if(NOT rc EQUAL 0)
-  message(FATAL_ERROR "event_stereo failed (${rc}): ${err}")
+  message(FATAL_ERROR "${SAMPLE} failed (${rc}): ${err}")
 endif()
 file(READ "${OUTPUT_DIR}/summary.md" summary)
-if(NOT summary MATCHES "dominant disparity \\| ([0-9-]+) px")
+if(NOT summary MATCHES "dominant disparity[^|]*\\| ([0-9-]+) px")
   message(FATAL_ERROR "no dominant disparity in summary.md")
 endif()
 set(d "${CMAKE_MATCH_1}")
@@ -42,7 +43,7 @@ foreach(check "within 1 px;MIN_WITHIN1" "density \\(estimated / non-occluded sig
     endif()
   endif()
 endforeach()
-foreach(f events.csv disparity_00000.png disparity_histogram.png)
+foreach(f ${REQUIRED_FILES})
   if(NOT EXISTS "${OUTPUT_DIR}/${f}")
     message(FATAL_ERROR "${f} was not written")
   endif()
