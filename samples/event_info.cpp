@@ -1,6 +1,7 @@
 // event_info: what is in an event recording (like ffprobe for videos).
 //
 //   event_info [--json] [--sensor WxH|NAME] [--one-based] [--left-camera-value 0|1] FILE...
+//   event_info --devices      (the event cameras connected: what EventCapture::open("davis:...") takes)
 //
 // Per file: detected format, sensor size, event count (ON / OFF, and left / right for stereo files), first
 // and last timestamp, duration, and the events the reader rejected (outside the sensor), found going back in
@@ -121,6 +122,24 @@ void printText(const Info& i)
               << " going back in time, " << (int64)i.skipped << " without time base\n";
 }
 
+int listDevices()
+{
+    const std::vector<EventDeviceInfo> devices = listEventDevices();
+    if (devices.empty())
+        std::cout << "no event camera connected (DAVIS over USB; see doc/live_davis.md for permissions)\n";
+    for (const EventDeviceInfo& d : devices)
+    {
+        std::cout << d.source << "\n  model:     " << d.model << ", serial " << d.serial << ", " << d.usbLocation
+                  << "\n  firmware:  " << d.firmwareVersion;
+        if (d.error.empty())
+            std::cout << ", logic " << d.logicVersion << "\n  sensor:    " << d.sensorSize.width << " x "
+                      << d.sensorSize.height << "\n  clock:     " << (d.master ? "master" : "slave (sync input)") << "\n";
+        else
+            std::cout << "\n  error:     " << d.error << "\n";
+    }
+    return 0;
+}
+
 }  // namespace
 
 int main(int argc, char** argv)
@@ -132,6 +151,8 @@ int main(int argc, char** argv)
     for (int k = 1; k < argc; k++)
     {
         const std::string a = argv[k];
+        if (a == "--devices")
+            return listDevices();
         if (a == "--json")
             json = true;
         else if (a == "--one-based")
@@ -152,7 +173,8 @@ int main(int argc, char** argv)
         }
         else if (a == "-h" || a == "--help" || (!a.empty() && a[0] == '-'))
         {
-            std::cerr << "usage: event_info [--json] [--sensor WxH|NAME] [--one-based] [--left-camera-value 0|1] FILE...\n";
+            std::cerr << "usage: event_info [--json] [--sensor WxH|NAME] [--one-based] [--left-camera-value 0|1] FILE...\n"
+                         "       event_info --devices\n";
             return a == "-h" || a == "--help" ? 0 : 2;
         }
         else

@@ -155,8 +155,23 @@ public:
         deferredCode = Error::StsOk;
     }
 
+    // "davis:<selector>", or the selector alone with apiPreference EVENT_CAP_DAVIS: a live camera.
+    static bool isLiveSource(const String& source, int api, String& selector)
+    {
+        if (hasPrefix(source, "davis:"))
+        {
+            selector = source.substr(6);
+            return true;
+        }
+        selector = source;
+        return api == EVENT_CAP_DAVIS;
+    }
+
     static Ptr<EventReader> makeReader(const String& path, int api, const ReaderOptions& opt)
     {
+        String selector;
+        if (isLiveSource(path, api, selector))
+            return openDavisReader(path, selector, opt);
         int backend = api;
         if (backend == EVENT_CAP_ANY)
         {
@@ -212,6 +227,18 @@ public:
         openedRight = rightPath;
         openedApi = api;
         openedStereoPair = true;
+        String leftSelector, rightSelector;
+        const bool leftLive = isLiveSource(leftPath, api, leftSelector);
+        const bool rightLive = isLiveSource(rightPath, api, rightSelector);
+        if (leftLive != rightLive)
+            CV_Error_(Error::StsBadArg, ("openStereo(%s, %s): one live camera and one file cannot be merged in time",
+                                         leftPath.c_str(), rightPath.c_str()));
+        if (leftLive)
+        {
+            start(openDavisStereo(leftPath, leftSelector, rightPath, rightSelector, options, rightTimeOffset),
+                  leftPath + " + " + rightPath);
+            return;
+        }
         Ptr<EventReader> l = makeReader(leftPath, api, options), r = makeReader(rightPath, api, options);
         if (l->isStereo() || r->isStereo())
             CV_Error_(Error::StsBadArg, ("openStereo(%s, %s): each file must hold one camera",
@@ -230,20 +257,26 @@ public:
     }
 
     // Moves the next decoded chunk through the bounds and time-order checks into `pending`.
-    // Returns false when nothing is left.
-    bool fill()
+    // Returns false when nothing is left; with @p wait false, also when a live source has nothing right now
+    // (it is asked once, which waits a little).
+    bool fill(bool wait = true)
     {
         if (pendingPos < pending.size())
             return true;
         pending.clear();
         pendingPos = 0;
-        while (pending.empty() && !readerDone)
+        for (bool first = true; pending.empty() && !readerDone && (wait || first); first = false)
         {
             raw.clear();
             try
             {
                 if (!reader->next(raw))
+                {
                     readerDone = true;
+                    const String why = reader->endMessage();  // e.g. a camera unplugged: a status, not an error
+                    if (!why.empty())
+                        lastError = why;
+                }
                 accept();
             }
             catch (const cv::Exception& e)
@@ -307,9 +340,12 @@ public:
         grabbed = false;
         if (!reader)
             return false;
+        // A live camera's packet is what it has sent so far: a batch does not wait to be full, and a window
+        // closes once the camera's clock has passed its end, events or not.
+        const bool live = reader->isLive();
         if (batchEvents > 0)
         {
-            while ((int64)batch.size() < batchEvents && fill())
+            while ((int64)batch.size() < batchEvents && fill(!live || batch.empty()))
             {
                 const size_t take = std::min((size_t)(batchEvents - (int64)batch.size()), pending.size() - pendingPos);
                 batch.insert(batch.end(), pending.begin() + pendingPos, pending.begin() + pendingPos + take);
@@ -320,7 +356,8 @@ public:
             grabbed = !batch.empty();
             return grabbed;
         }
-        if (!fill())
+        // A file's stream ends with its last event; a camera's once it is gone (its windows may be empty).
+        if ((!windowStarted || !live) ? !fill() : (pendingPos >= pending.size() && readerDone))
         {
             raiseDeferredError();
             return false;  // nothing left: the stream has ended
@@ -331,14 +368,21 @@ public:
             windowStarted = true;
         }
         const int64 end = windowStart + windowUs;
-        while (fill())
+        for (;;)
         {
-            size_t i = pendingPos;
-            while (i < pending.size() && pending[i].t < end)
-                i++;
-            batch.insert(batch.end(), pending.begin() + pendingPos, pending.begin() + i);
-            pendingPos = i;
-            if (i < pending.size())
+            if (pendingPos < pending.size())
+            {
+                size_t i = pendingPos;
+                while (i < pending.size() && pending[i].t < end)
+                    i++;
+                batch.insert(batch.end(), pending.begin() + pendingPos, pending.begin() + i);
+                pendingPos = i;
+                if (i < pending.size())
+                    break;  // an event at or after the end: the window is complete
+            }
+            if (live && reader->timeHorizon() >= end)
+                break;
+            if (!fill(!live) && readerDone)
                 break;
         }
         windowStart = end;
@@ -506,7 +550,17 @@ double EventCapture::get(int propId) const
     case EVENT_CAP_PROP_TEXT_COLUMN_P: return s.options.textColumnP;
     case EVENT_CAP_PROP_TEXT_COLUMN_CAMERA: return s.options.textColumnCamera;
     case EVENT_CAP_PROP_TEXT_LEFT_CAMERA_VALUE: return s.options.textLeftCameraValue;
-    default: return 0;
+    case EVENT_CAP_PROP_QUEUE_CAPACITY: return s.options.liveQueueCapacity;
+    default:
+    {
+        double v = 0;
+        if (s.reader && s.reader->getProperty(propId, v))
+            return v;
+        for (const auto& setting : s.options.deviceSettings)  // set before open
+            if (setting.first == propId)
+                v = setting.second;
+        return v;
+    }
     }
 }
 
@@ -547,8 +601,10 @@ bool EventCapture::set(int propId, double value)
     case EVENT_CAP_PROP_EXCEPTION_MODE: s.exceptionMode = v != 0; return true;
     case EVENT_CAP_PROP_RIGHT_TIME_OFFSET_US: s.rightTimeOffset = (int64)std::llround(value); return true;
     case EVENT_CAP_PROP_POS_US:
-        if (!s.reader)
-            return false;
+    {
+        String selector;
+        if (!s.reader || Impl::isLiveSource(s.openedPath, s.openedApi, selector))
+            return false;  // a live camera cannot seek
         try
         {
             s.seek((int64)std::llround(value));
@@ -561,6 +617,7 @@ bool EventCapture::set(int propId, double value)
             return false;
         }
         return true;
+    }
     case EVENT_CAP_PROP_TEXT_TIME_UNIT:
         if (v < EVENT_TIME_UNIT_AUTO || v > EVENT_TIME_UNIT_NANOSECONDS) return false;
         s.options.textTimeUnit = v;
@@ -578,7 +635,29 @@ bool EventCapture::set(int propId, double value)
         if (v != 0 && v != 1) return false;
         s.options.textLeftCameraValue = v;
         return true;
-    default: return false;
+    case EVENT_CAP_PROP_QUEUE_CAPACITY:
+        if (v < 1) return false;
+        s.options.liveQueueCapacity = v;
+        return true;
+    default:
+        if (propId < EVENT_CAP_PROP_DEVICE_BIAS_PRESET || propId > EVENT_CAP_PROP_DEVICE_TIMESTAMP_RESET)
+            return false;
+        if (!s.reader)
+        {
+            s.options.deviceSettings.emplace_back(propId, value);  // applied by open() of a live camera
+            return true;
+        }
+        try
+        {
+            return s.reader->setProperty(propId, value);
+        }
+        catch (const cv::Exception& e)
+        {
+            s.lastError = e.err;
+            if (s.exceptionMode)
+                throw;
+            return false;
+        }
     }
 }
 

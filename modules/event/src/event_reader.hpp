@@ -24,6 +24,8 @@ struct ReaderOptions
     int textColumnCamera = -2;     // -2: the 5th column when present, -1: none
     int textLeftCameraValue = 0;
     int cameraFilter = -1;         // >= 0: deliver only the events of this CameraId (one side of a stereo file)
+    int liveQueueCapacity = 512;   // live cameras: USB transfers buffered between the reader thread and read()
+    std::vector<std::pair<int, double> > deviceSettings;  // live cameras: EVENT_CAP_PROP_DEVICE_* set before open
 };
 
 class EventReader
@@ -45,6 +47,16 @@ public:
     virtual double progress() const { return -1; }
     /** True when the file holds both cameras of a stereo pair (a camera column / two streams). */
     virtual bool isStereo() const { return false; }
+    /** True for a camera: next() may return nothing yet (it waits a little, not for data). */
+    virtual bool isLive() const { return false; }
+    /** Live sources: no event older than this [us] can come any more (the device clock as last reported);
+    a merge uses it to go on while one camera is silent. Files: INT64_MIN (unknown). */
+    virtual int64 timeHorizon() const { return INT64_MIN; }
+    /** Why next() returned false when that was not the end of a file (e.g. "camera unplugged"), else empty. */
+    virtual String endMessage() const { return String(); }
+    /** Source-specific properties (live cameras' EVENT_CAP_PROP_DEVICE_*, counters); false when not supported. */
+    virtual bool setProperty(int /*propId*/, double /*value*/) { return false; }
+    virtual bool getProperty(int /*propId*/, double& /*value*/) const { return false; }
 };
 
 Ptr<EventReader> openTextReader(const String& path, const ReaderOptions& options);
@@ -61,6 +73,12 @@ bool isRosBag2(const String& path);
 /** Merges a left and a right stream in time order (left first on ties), setting Event::camera and adding
 @p rightTimeOffset to the right stream's timestamps. Each side is read in chunks: memory stays bounded. */
 Ptr<EventReader> openStereoMerge(const Ptr<EventReader>& left, const Ptr<EventReader>& right, int64 rightTimeOffset);
+
+/** Live DAVIS camera: @p selector is an index ("0") or a serial number; @p source names it in messages. */
+Ptr<EventReader> openDavisReader(const String& source, const String& selector, const ReaderOptions& options);
+/** Two live DAVIS cameras on a sync cable, merged with one time base (the master's clock reset once both run). */
+Ptr<EventReader> openDavisStereo(const String& leftSource, const String& leftSelector, const String& rightSource,
+                                 const String& rightSelector, const ReaderOptions& options, int64 rightTimeOffset);
 
 /** Events a back-end decodes per next() call: large enough to amortise the call, small enough for cache. */
 static const size_t kReaderChunk = 16384;

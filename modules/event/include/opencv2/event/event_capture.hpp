@@ -25,7 +25,8 @@ enum EventCaptureAPIs
     EVENT_CAP_AEDAT4 = 6,        //!< DV AEDAT 4.0 (LZ4 / ZSTD packets; two event streams = stereo)
     EVENT_CAP_ROSBAG1 = 7,       //!< ROS1 bag v2.0, dvs_msgs/EventArray or event_camera_msgs/EventPacket (evt3, libcaer); two event topics = stereo
     EVENT_CAP_ROSBAG2 = 8,       //!< ROS2 bag (sqlite3 storage; folder or .db3), event_camera_msgs/msg/EventPacket (evt3, libcaer)
-    EVENT_CAP_HDF5 = 9           //!< MVSEC-style HDF5 (/davis/left|right/events), when built with libhdf5
+    EVENT_CAP_HDF5 = 9,          //!< MVSEC-style HDF5 (/davis/left|right/events), when built with libhdf5
+    EVENT_CAP_DAVIS = 10         //!< live iniVation DAVIS240 / DAVIS346 over libusb-1.0: source "davis:0" (index), "davis:<serial>", or "0" / "<serial>" with this apiPreference
 };
 
 /** @brief Properties of EventCapture (get / set; those marked "before open" are read by open()). */
@@ -47,6 +48,10 @@ enum EventCaptureProperties
     EVENT_CAP_PROP_STEREO = 14,            //!< 1 when the source delivers both cameras of a stereo pair (read-only)
     EVENT_CAP_PROP_SKIPPED = 15,           //!< events in the file that cannot be delivered, e.g. before the first time base (read-only)
     EVENT_CAP_PROP_PROGRESS = 16,          //!< share of the file decoded so far, 0..1 (read ahead by one chunk); -1 when unknown
+    EVENT_CAP_PROP_DROPPED_EVENTS = 17,    //!< live: events decoded but lost because read() did not keep up (the queue was full); read-only
+    EVENT_CAP_PROP_DROPPED_TRANSFERS = 18, //!< live: USB transfers that failed (their data is lost); read-only
+    EVENT_CAP_PROP_INVALID_ADDRESSES = 19, //!< live: event words with an address beyond the pixel array (skipped); read-only
+    EVENT_CAP_PROP_QUEUE_CAPACITY = 20,    //!< live, before open: USB transfers buffered between the camera's reader thread and read() (default 512, about 0.5 s at full rate)
     EVENT_CAP_PROP_TEXT_TIME_UNIT = 100,   //!< text, before open: EventTimeUnit of the t column (default EVENT_TIME_UNIT_AUTO)
     EVENT_CAP_PROP_TEXT_ONE_BASED = 101,   //!< text, before open: 1 when x and y start at 1 (TUM stereo recordings)
     EVENT_CAP_PROP_TEXT_COLUMN_T = 102,    //!< text, before open: 0-based column of t (default 0)
@@ -54,7 +59,21 @@ enum EventCaptureProperties
     EVENT_CAP_PROP_TEXT_COLUMN_Y = 104,    //!< text, before open: column of y (default 2)
     EVENT_CAP_PROP_TEXT_COLUMN_P = 105,    //!< text, before open: column of the polarity (default 3; > 0 is ON)
     EVENT_CAP_PROP_TEXT_COLUMN_CAMERA = 106, //!< text, before open: column of the camera id, -1 = none (default: the 5th column when there is one)
-    EVENT_CAP_PROP_TEXT_LEFT_CAMERA_VALUE = 107 //!< text, before open: value of the camera column that means the left camera (default 0; 1 for TUM's Fan recording)
+    EVENT_CAP_PROP_TEXT_LEFT_CAMERA_VALUE = 107, //!< text, before open: value of the camera column that means the left camera (default 0; 1 for TUM's Fan recording)
+    EVENT_CAP_PROP_DEVICE_BIAS_PRESET = 200,      //!< live: 0 = the vendor's default biases for the chip (set uploads them again)
+    EVENT_CAP_PROP_DEVICE_BIAS_SELECT = 201,      //!< live: index of the bias EVENT_CAP_PROP_DEVICE_BIAS_VALUE reads / writes
+    EVENT_CAP_PROP_DEVICE_BIAS_VALUE = 202,       //!< live: raw 16-bit word of the selected bias (coarse/fine, VDAC or shifted-source encoding, see doc/live_davis.md)
+    EVENT_CAP_PROP_DEVICE_BA_FILTER = 203,        //!< live: background-activity (noise) filter on the camera, 1 = on (default 1)
+    EVENT_CAP_PROP_DEVICE_BA_FILTER_TIME_US = 204, //!< live: its support time [us], rounded to 250 us steps (default 2000)
+    EVENT_CAP_PROP_DEVICE_ROI_X = 205,            //!< live: region of interest on the camera (events outside are not sent); left column
+    EVENT_CAP_PROP_DEVICE_ROI_Y = 206,            //!< live: ROI top row
+    EVENT_CAP_PROP_DEVICE_ROI_WIDTH = 207,        //!< live: ROI width (default: the sensor)
+    EVENT_CAP_PROP_DEVICE_ROI_HEIGHT = 208,       //!< live: ROI height (default: the sensor)
+    EVENT_CAP_PROP_DEVICE_TIMESTAMP_RESET = 209,  //!< live: set 1 to reset the camera clock to 0 now (the master resets its slave too)
+    EVENT_CAP_PROP_DEVICE_IS_MASTER = 210,        //!< live, read-only: 1 when the camera drives the timestamp clock (no sync input)
+    EVENT_CAP_PROP_DEVICE_LOGIC_VERSION = 211,    //!< live, read-only: FPGA logic version
+    EVENT_CAP_PROP_DEVICE_FIRMWARE_VERSION = 212, //!< live, read-only: USB firmware version
+    EVENT_CAP_PROP_DEVICE_CHIP_ID = 213           //!< live, read-only: chip identifier (0..2 DAVIS240A/B/C, 4/5/9 DAVIS346A/B/C, ...)
 };
 
 /** @brief What EventCapture does with an event older than the one before it (a sensor reset, a bad file). */
@@ -107,14 +126,20 @@ public:
     CV_WRAP explicit EventCapture(const String& source, int apiPreference = EVENT_CAP_ANY);
     virtual ~EventCapture();
 
-    /** @brief Opens a recording.
-    @param source a file path.
+    /** @brief Opens a recording or a live camera.
+    @param source a file path, or a live camera: "davis:0" (the first DAVIS, see listEventDevices()),
+    "davis:<serial>". A camera is configured with the vendor's default biases, events only (APS and IMU off),
+    its clock reset to 0 at the start; read() then waits for its events. When the camera is unplugged read()
+    returns false and getLastError() says so (no exception: like cv::VideoCapture losing a camera).
     @param apiPreference an EventCaptureAPIs value; EVENT_CAP_ANY detects the format from the content.
     @return true on success (errors raise cv::Exception unless the exception mode is off).
     Options set with set() before open() (sensor size, text columns, ...) apply to it. */
     CV_WRAP virtual bool open(const String& source, int apiPreference = EVENT_CAP_ANY);
 
-    /** @brief Opens a stereo pair stored as two single-camera recordings.
+    /** @brief Opens a stereo pair stored as two single-camera recordings, or two live cameras.
+    For two DAVIS cameras ("davis:0", "davis:1") joined by a sync cable, exactly one must report itself master;
+    the master's clock is reset once both run, so that both streams share one time base. Both reporting
+    master means the cable is missing: an error says so.
     read() then delivers both streams merged in time order (left first on equal timestamps) with
     Event::camera set, the right timestamps shifted by EVENT_CAP_PROP_RIGHT_TIME_OFFSET_US.
     A single file holding both cameras (e.g. a text file with a camera column) is opened with open() and
@@ -158,6 +183,24 @@ public:
 protected:
     Ptr<Impl> impl;
 };
+
+/** @brief A camera connected to this computer, as listEventDevices() reports it. */
+struct CV_EXPORTS EventDeviceInfo
+{
+    String source;       //!< what EventCapture::open() takes for it: "davis:<serial>" (or "davis:<index>" without a serial)
+    String model;        //!< "DAVIS346B", "DAVIS240C", ... ("DAVIS" when it could not be opened)
+    String serial;       //!< USB serial number
+    String usbLocation;  //!< "usb <bus>:<address>"
+    int firmwareVersion; //!< USB firmware version
+    int logicVersion;    //!< FPGA logic version; -1 when it could not be opened
+    Size sensorSize;     //!< events' sensor size; empty when it could not be opened
+    bool master;         //!< drives the timestamp clock (false: a slave on a sync cable)
+    String error;        //!< why the camera could not be opened (permissions, in use, ...); empty when it could
+};
+
+/** @brief Lists the event cameras connected (DAVIS over USB), opening each briefly to identify it.
+Returns an empty list when there is none (or when the module was built without libusb-1.0); never raises. */
+CV_EXPORTS std::vector<EventDeviceInfo> listEventDevices();
 
 /** @brief Names the format of a recording from its first bytes (and its extension when the content is
 ambiguous): "TEXT", "PROPHESEE_DAT", ...; empty when it is not recognised or cannot be opened. */

@@ -1,0 +1,614 @@
+// This file is part of OpenCV project.
+// It is subject to the license terms in the LICENSE file found in the top-level directory
+// of this distribution and at http://opencv.org/license.html.
+
+// The live DAVIS back-end without hardware: a fake USB transport answers the configuration channel from a
+// register map, records every write, and replays scripted bulk transfers (data, failed transfers, unplug).
+// EventCapture runs unchanged on top of it, so identification, configuration, start / stop, stereo sync and
+// the error paths are those a real camera gets.
+
+#include "test_precomp.hpp"
+#include "davis_test_words.hpp"
+#include "../src/usb_transport.hpp"
+
+#include <chrono>
+#include <deque>
+#include <mutex>
+#include <thread>
+
+namespace opencv_test { namespace {
+
+using namespace cv::event::detail;
+using namespace davis_words;
+
+struct ConfigWrite
+{
+    int camera, module, param;
+    uint32_t value;
+};
+
+/** What every fake camera of one test writes, in order (a stereo test checks the order across cameras). */
+struct WriteLog
+{
+    std::mutex mutex;
+    std::vector<ConfigWrite> writes;
+    std::vector<std::pair<int, std::string> > usbCalls;  // (camera, "clearHalt 0x82" / "startBulkIn" / "stopBulkIn")
+    void add(const ConfigWrite& w)
+    {
+        std::lock_guard<std::mutex> lock(mutex);
+        writes.push_back(w);
+    }
+    void call(int camera, const std::string& what)
+    {
+        std::lock_guard<std::mutex> lock(mutex);
+        usbCalls.emplace_back(camera, what);
+    }
+    /** Index of the first write (module, param, value) of @p camera at or after @p from; -1 when none. */
+    int find(int camera, int module, int param, uint32_t value, int from = 0)
+    {
+        std::lock_guard<std::mutex> lock(mutex);
+        for (size_t i = (size_t)from; i < writes.size(); i++)
+            if (writes[i].camera == camera && writes[i].module == module && writes[i].param == param &&
+                writes[i].value == value)
+                return (int)i;
+        return -1;
+    }
+    std::map<std::pair<int, int>, uint32_t> lastValues(int camera)
+    {
+        std::lock_guard<std::mutex> lock(mutex);
+        std::map<std::pair<int, int>, uint32_t> m;
+        for (const ConfigWrite& w : writes)
+            if (w.camera == camera)
+                m[std::make_pair(w.module, w.param)] = w.value;
+        return m;
+    }
+};
+
+/** One scripted camera. Register reads come from `registers`; bulk reads replay `bulk`; a timestamp-reset
+pulse appends a reset word and then `afterReset` to its stream and to that of its slave. */
+struct FakeCamera
+{
+    int index = 0;
+    UsbDeviceId id;
+    std::map<std::pair<int, int>, uint32_t> registers;
+    std::vector<uint8_t> afterReset;
+    FakeCamera* slave = nullptr;
+    bool unplugWhenDrained = false;
+    std::string openError;
+    Ptr<WriteLog> log;
+
+    std::mutex mutex;
+    std::deque<std::pair<UsbBulkStatus, std::vector<uint8_t> > > bulk;
+    bool gone = false;
+    int resets = 0;
+
+    void pushData(const std::vector<uint8_t>& bytes, size_t transferBytes = 4096)
+    {
+        std::lock_guard<std::mutex> lock(mutex);
+        for (size_t i = 0; i < bytes.size(); i += transferBytes)
+            bulk.emplace_back(USB_BULK_DATA, std::vector<uint8_t>(bytes.begin() + i,
+                                                                  bytes.begin() + std::min(bytes.size(), i + transferBytes)));
+    }
+    void pushStatus(UsbBulkStatus s)
+    {
+        std::lock_guard<std::mutex> lock(mutex);
+        bulk.emplace_back(s, std::vector<uint8_t>());
+    }
+    void timestampReset()
+    {
+        WordStream reset;
+        reset.word(timestampResetWord());
+        std::vector<uint8_t> bytes = reset.bytes;
+        bytes.insert(bytes.end(), afterReset.begin(), afterReset.end());
+        pushData(bytes);
+        std::lock_guard<std::mutex> lock(mutex);
+        resets++;
+    }
+};
+
+Ptr<FakeCamera> makeDavis(int index, int chip, int columns, int rows, bool invertXY, bool master, const Ptr<WriteLog>& log)
+{
+    Ptr<FakeCamera> c = makePtr<FakeCamera>();
+    c->index = index;
+    c->log = log;
+    c->id.vendorId = 0x152A;
+    c->id.productId = 0x841A;
+    c->id.bus = 1;
+    c->id.address = 10 + index;
+    c->id.firmwareVersion = 6;
+    c->id.serial = cv::format("0000049%d", index);
+    c->registers = {
+        { { 6, 0 }, 18 }, { { 6, 7 }, 1 }, { { 6, 1 }, (uint32_t)chip }, { { 6, 2 }, master ? 1u : 0u },
+        { { 6, 3 }, 104 }, { { 6, 5 }, 80 }, { { 6, 6 }, 1000 },
+        { { 1, 0 }, (uint32_t)columns }, { { 1, 1 }, (uint32_t)rows }, { { 1, 2 }, invertXY ? 4u : 0u },
+        { { 1, 10 }, 1 }, { { 1, 30 }, 1 }, { { 1, 40 }, 1 },
+    };
+    return c;
+}
+
+class FakeHandle CV_FINAL : public UsbDeviceHandle
+{
+public:
+    explicit FakeHandle(const Ptr<FakeCamera>& c) : c_(c) {}
+    ~FakeHandle() CV_OVERRIDE { c_->log->call(c_->index, "close"); }
+
+    void controlOut(uint8_t requestType, uint8_t request, uint16_t value, uint16_t index, const uint8_t* data,
+                    size_t size) CV_OVERRIDE
+    {
+        checkPresent();
+        ASSERT_EQ(0x40, requestType);
+        if (request == 0xBF)
+        {
+            ASSERT_EQ(4u, size);
+            c_->log->add({ c_->index, value, index, bigEndian(data) });
+        }
+        else if (request == 0xC2)
+        {
+            ASSERT_EQ(6u * value, size);
+            bool pulse = false;
+            for (size_t i = 0; i < value; i++)
+            {
+                const uint32_t v = bigEndian(data + 6 * i + 2);
+                c_->log->add({ c_->index, data[6 * i], data[6 * i + 1], v });
+                pulse = pulse || (data[6 * i] == 0 && data[6 * i + 1] == 2 && v == 1);
+            }
+            if (pulse)
+            {
+                c_->timestampReset();
+                if (c_->slave)
+                    c_->slave->timestampReset();  // the sync cable carries the pulse
+            }
+        }
+        else
+            FAIL() << "unexpected request " << (int)request;
+    }
+
+    void controlIn(uint8_t requestType, uint8_t request, uint16_t value, uint16_t index, uint8_t* data,
+                   size_t size) CV_OVERRIDE
+    {
+        checkPresent();
+        ASSERT_EQ(0xC0, requestType);
+        ASSERT_EQ(0xBF, request);
+        ASSERT_EQ(4u, size);
+        const auto it = c_->registers.find(std::make_pair((int)value, (int)index));
+        const uint32_t v = it == c_->registers.end() ? 0 : it->second;
+        data[0] = (uint8_t)(v >> 24);
+        data[1] = (uint8_t)(v >> 16);
+        data[2] = (uint8_t)(v >> 8);
+        data[3] = (uint8_t)v;
+    }
+
+    void clearHalt(uint8_t endpoint) CV_OVERRIDE { c_->log->call(c_->index, cv::format("clearHalt 0x%02X", endpoint)); }
+    void startBulkIn(uint8_t endpoint, int transfers, int bytes) CV_OVERRIDE
+    {
+        c_->log->call(c_->index, cv::format("startBulkIn 0x%02X %d x %d", endpoint, transfers, bytes));
+    }
+    void stopBulkIn() CV_OVERRIDE { c_->log->call(c_->index, "stopBulkIn"); }
+
+    UsbBulkStatus readBulk(std::vector<uint8_t>& data, int timeoutMs) CV_OVERRIDE
+    {
+        {
+            std::lock_guard<std::mutex> lock(c_->mutex);
+            if (!c_->bulk.empty())
+            {
+                const UsbBulkStatus s = c_->bulk.front().first;
+                data = c_->bulk.front().second;
+                c_->bulk.pop_front();
+                if (s == USB_BULK_DEVICE_GONE)
+                    c_->gone = true;
+                return s;
+            }
+            if (c_->gone || (c_->unplugWhenDrained && c_->resets > 0))
+            {
+                c_->gone = true;
+                return USB_BULK_DEVICE_GONE;
+            }
+        }
+        std::this_thread::sleep_for(std::chrono::milliseconds(std::min(timeoutMs, 2)));
+        return USB_BULK_TIMEOUT;
+    }
+
+private:
+    static uint32_t bigEndian(const uint8_t* b)
+    {
+        return ((uint32_t)b[0] << 24) | ((uint32_t)b[1] << 16) | ((uint32_t)b[2] << 8) | b[3];
+    }
+    void checkPresent()
+    {
+        std::lock_guard<std::mutex> lock(c_->mutex);
+        if (c_->gone)
+            CV_Error(cv::Error::StsError, c_->id.location() + ": LIBUSB_ERROR_NO_DEVICE (fake)");
+    }
+    Ptr<FakeCamera> c_;
+};
+
+class FakeTransport CV_FINAL : public UsbTransport
+{
+public:
+    std::vector<Ptr<FakeCamera> > cameras;
+    std::vector<UsbDeviceId> list(uint16_t vendorId, const std::vector<uint16_t>& productIds) CV_OVERRIDE
+    {
+        std::vector<UsbDeviceId> ids;
+        for (const Ptr<FakeCamera>& c : cameras)
+            if (c->id.vendorId == vendorId && std::count(productIds.begin(), productIds.end(), c->id.productId) && !c->gone)
+                ids.push_back(c->id);
+        return ids;
+    }
+    Ptr<UsbDeviceHandle> open(const UsbDeviceId& id) CV_OVERRIDE
+    {
+        for (const Ptr<FakeCamera>& c : cameras)
+            if (c->id.address == id.address)
+            {
+                if (!c->openError.empty())
+                    CV_Error(cv::Error::StsError, id.location() + ": " + c->openError);
+                c->log->call(c->index, "open");
+                return makePtr<FakeHandle>(c);
+            }
+        CV_Error(cv::Error::StsError, id.location() + ": no such device");
+    }
+};
+
+/** Installs a fake transport for one test and restores the real one afterwards. */
+struct FakeUsb
+{
+    Ptr<FakeTransport> transport = makePtr<FakeTransport>();
+    Ptr<WriteLog> log = makePtr<WriteLog>();
+    FakeUsb() { setUsbTransport(transport); }
+    ~FakeUsb() { setUsbTransport(Ptr<UsbTransport>()); }
+    Ptr<FakeCamera> add(int chip, int columns, int rows, bool invertXY = false, bool master = true)
+    {
+        Ptr<FakeCamera> c = makeDavis((int)transport->cameras.size(), chip, columns, rows, invertXY, master, log);
+        transport->cameras.push_back(c);
+        return c;
+    }
+};
+
+/** encodeEvents() followed by the clock words a running camera keeps sending (a wrap every 32.768 ms), up to
+one wrap past the last event: the receiver learns that nothing older can come. */
+std::vector<uint8_t> encodeWithClock(const std::vector<Event>& events)
+{
+    std::vector<uint8_t> bytes = encodeEvents(events);
+    WordStream clock;
+    for (int64 t = 0; t <= events.back().t + 0x8000; t += 0x8000)
+        clock.word(wrapWord(1));
+    bytes.insert(bytes.end(), clock.bytes.begin(), clock.bytes.end());
+    return bytes;
+}
+
+std::vector<Event> randomEvents(int n, int width, int height, uint64 seed, int64 t0 = 0)
+{
+    cv::RNG rng(seed);
+    std::vector<Event> ev;
+    int64 t = t0;
+    for (int i = 0; i < n; i++)
+    {
+        t += rng.uniform(0, 90);
+        ev.emplace_back(t, rng.uniform(0, width), rng.uniform(0, height), rng.uniform(0, 2));
+    }
+    return ev;
+}
+
+/** Reads until @p n events came or the stream ended. */
+std::vector<Event> readEvents(EventCapture& cap, size_t n)
+{
+    cap.set(EVENT_CAP_PROP_BATCH_EVENTS, 1000);
+    std::vector<Event> all, packet;
+    while (all.size() < n && cap.read(packet))
+        all.insert(all.end(), packet.begin(), packet.end());
+    return all;
+}
+
+TEST(Event_Capture_Davis, davis346_identified_configured_started_and_stopped)
+{
+    FakeUsb usb;
+    Ptr<FakeCamera> cam = usb.add(5 /* DAVIS346B */, 346, 260);
+    // Events from before the capture's clock reset must not come out; those after it must, exactly.
+    cam->pushData(encodeEvents(randomEvents(300, 346, 260, 1, 20000)));
+    const std::vector<Event> truth = randomEvents(5000, 346, 260, 2);
+    cam->afterReset = encodeEvents(truth);
+
+    EventCapture cap("davis:0");
+    ASSERT_TRUE(cap.isOpened());
+    EXPECT_EQ("DAVIS", cap.getBackendName());
+    EXPECT_EQ(Size(346, 260), cap.getSensorSize());
+    EXPECT_EQ(1, cap.get(EVENT_CAP_PROP_DEVICE_IS_MASTER));
+    EXPECT_EQ(18, cap.get(EVENT_CAP_PROP_DEVICE_LOGIC_VERSION));
+    EXPECT_EQ(6, cap.get(EVENT_CAP_PROP_DEVICE_FIRMWARE_VERSION));
+    EXPECT_EQ(5, cap.get(EVENT_CAP_PROP_DEVICE_CHIP_ID));
+    EXPECT_EQ(truth, readEvents(cap, truth.size()));
+    EXPECT_EQ(300, cap.get(EVENT_CAP_PROP_SKIPPED));  // before the reset
+    EXPECT_EQ(0, cap.get(EVENT_CAP_PROP_DROPPED_EVENTS));
+
+    // Default biases of the DAVIS346 bias generator (values of the protocol fact sheet).
+    std::map<std::pair<int, int>, uint32_t> cfg = usb.log->lastValues(0);
+    EXPECT_EQ(0x5FFFu, (cfg[{ 5, 11 }]));  // OnBn
+    EXPECT_EQ(0x401Fu, (cfg[{ 5, 12 }]));  // OffBn
+    EXPECT_EQ(0x427Fu, (cfg[{ 5, 10 }]));  // DiffBn
+    EXPECT_EQ(0x23ADu, (cfg[{ 5, 14 }]));  // PrBp
+    EXPECT_EQ(0x7D7Eu, (cfg[{ 5, 9 }]));   // PadFollBn, disabled
+    EXPECT_EQ(0x8410u, (cfg[{ 5, 36 }]));  // SSN
+    EXPECT_EQ(1u, (cfg[{ 5, 143 }]));      // SelectGrayCounter
+    EXPECT_EQ(8u, (cfg[{ 1, 32 }]));       // background-activity filter 2 ms = 8 x 250 us
+    EXPECT_EQ(80000u, (cfg[{ 9, 1 }]));    // early packet: 8 x 125 us at 80 MHz, in clock cycles
+    EXPECT_EQ(0u, (cfg[{ 2, 4 }]));        // APS off
+    EXPECT_EQ(-1, usb.log->find(0, 5, 139, 0));  // a DAVIS240A/B field: never written to a 346
+
+    // Start sequence: everything off, chip on, then USB, timestamps, mux, DVS; nothing else runs.
+    int at = usb.log->find(0, 1, 3, 0);
+    ASSERT_GE(at, 0);
+    for (const ConfigWrite& step : std::vector<ConfigWrite>{ { 0, 0, 3, 1 }, { 0, 9, 0, 1 }, { 0, 0, 1, 1 },
+                                                              { 0, 0, 0, 1 }, { 0, 1, 3, 1 }, { 0, 0, 2, 1 } })
+    {
+        const int next = usb.log->find(0, step.module, step.param, step.value, at);
+        ASSERT_GT(next, at) << "(" << step.module << ", " << step.param << ") = " << step.value << " out of order";
+        at = next;
+    }
+    EXPECT_EQ(-1, usb.log->find(0, 2, 4, 1));  // APS never runs
+    EXPECT_EQ(-1, usb.log->find(0, 3, 2, 1));  // nor the IMU
+    EXPECT_EQ("clearHalt 0x82", usb.log->usbCalls[1].second);
+    EXPECT_EQ("startBulkIn 0x82 8 x 8192", usb.log->usbCalls[2].second);
+
+    // Stop sequence on release: DVS off first, chip off last, then the transfers go.
+    const int before = (int)usb.log->writes.size();
+    cap.release();
+    EXPECT_FALSE(cap.isOpened());
+    const int dvsOff = usb.log->find(0, 1, 3, 0, before), chipOff = usb.log->find(0, 0, 3, 0, before);
+    EXPECT_GE(dvsOff, 0);
+    EXPECT_GT(chipOff, dvsOff);
+    EXPECT_EQ("stopBulkIn", usb.log->usbCalls[usb.log->usbCalls.size() - 2].second);
+    EXPECT_EQ("close", usb.log->usbCalls.back().second);
+}
+
+TEST(Event_Capture_Davis, davis240_fx2_invert_xy_biases_and_knobs)
+{
+    FakeUsb usb;
+    Ptr<FakeCamera> cam = usb.add(2 /* DAVIS240C */, 180, 240, true);  // raw columns are rows
+    cam->id.productId = 0x841B;  // FX2
+    cam->id.firmwareVersion = 4;
+    cam->afterReset = encodeEvents({ Event(5, 179, 239, 1) });  // raw (column 179, row 239)
+
+    EventCapture cap;
+    cap.set(EVENT_CAP_PROP_DEVICE_BA_FILTER_TIME_US, 1000);  // before open: applied by open()
+    ASSERT_TRUE(cap.open("davis:00000490"));                  // by serial
+    EXPECT_EQ(Size(240, 180), cap.getSensorSize());
+    const std::vector<Event> ev = readEvents(cap, 1);
+    ASSERT_EQ(1u, ev.size());
+    EXPECT_EQ(Event(5, 239, 179, 1), ev[0]);
+
+    std::map<std::pair<int, int>, uint32_t> cfg = usb.log->lastValues(0);
+    EXPECT_EQ(0x427Fu, (cfg[{ 5, 0 }]));   // DiffBn
+    EXPECT_EQ(0x5FFFu, (cfg[{ 5, 1 }]));   // OnBn
+    EXPECT_EQ(0x400Fu, (cfg[{ 5, 2 }]));   // OffBn
+    EXPECT_EQ(0x8410u, (cfg[{ 5, 21 }]));  // SSN
+    EXPECT_EQ(0, (int)cfg.count({ 5, 22 })); // the DAVIS240 has 22 biases
+    EXPECT_EQ(4u, (cfg[{ 1, 32 }]));        // 1000 us
+    EXPECT_EQ(1000, cap.get(EVENT_CAP_PROP_DEVICE_BA_FILTER_TIME_US));
+
+    // ROI in event coordinates -> the filter's raw (column, row) coordinates, swapped here, inclusive ends.
+    EXPECT_TRUE(cap.set(EVENT_CAP_PROP_DEVICE_ROI_WIDTH, 100));
+    EXPECT_TRUE(cap.set(EVENT_CAP_PROP_DEVICE_ROI_X, 10));
+    EXPECT_TRUE(cap.set(EVENT_CAP_PROP_DEVICE_ROI_HEIGHT, 50));
+    cfg = usb.log->lastValues(0);
+    EXPECT_EQ(0u, (cfg[{ 1, 41 }]));    // start column = y
+    EXPECT_EQ(10u, (cfg[{ 1, 42 }]));   // start row = x
+    EXPECT_EQ(49u, (cfg[{ 1, 43 }]));   // end column = y + height - 1
+    EXPECT_EQ(109u, (cfg[{ 1, 44 }]));  // end row = x + width - 1
+    EXPECT_FALSE(cap.set(EVENT_CAP_PROP_DEVICE_ROI_WIDTH, 300));  // beyond the sensor
+    EXPECT_EQ(100, cap.get(EVENT_CAP_PROP_DEVICE_ROI_WIDTH));
+    EXPECT_TRUE(cap.set(EVENT_CAP_PROP_DEVICE_BA_FILTER, 0));
+    EXPECT_EQ(0u, (usb.log->lastValues(0)[{ 1, 31 }]));
+    EXPECT_TRUE(cap.set(EVENT_CAP_PROP_DEVICE_BIAS_SELECT, 1));
+    EXPECT_TRUE(cap.set(EVENT_CAP_PROP_DEVICE_BIAS_VALUE, 0x5F0F));
+    EXPECT_EQ(0x5F0Fu, (usb.log->lastValues(0)[{ 5, 1 }]));
+    EXPECT_TRUE(cap.set(EVENT_CAP_PROP_DEVICE_BIAS_PRESET, 0));
+    EXPECT_EQ(0x5FFFu, (usb.log->lastValues(0)[{ 5, 1 }]));
+    const int resetsBefore = cam->resets;
+    EXPECT_TRUE(cap.set(EVENT_CAP_PROP_DEVICE_TIMESTAMP_RESET, 1));
+    EXPECT_EQ(resetsBefore + 1, cam->resets);
+    EXPECT_FALSE(cap.set(EVENT_CAP_PROP_POS_US, 0));  // a camera cannot seek
+}
+
+TEST(Event_Capture_Davis, unusable_cameras_are_refused_with_the_reason)
+{
+    {
+        FakeUsb usb;  // nothing connected
+        EXPECT_TRUE(listEventDevices().empty());
+        EventCapture cap;
+        cap.set(EVENT_CAP_PROP_EXCEPTION_MODE, 0);
+        EXPECT_FALSE(cap.open("davis:0"));
+        EXPECT_NE(std::string::npos, cap.getLastError().find("davis:0: no DAVIS camera is connected")) << cap.getLastError();
+    }
+    struct Case { std::function<void(FakeCamera&)> spoil; std::string source, message; };
+    const std::vector<Case> cases = {
+        { [](FakeCamera& c) { c.registers[{ 6, 0 }] = 17; }, "davis:0", "FPGA logic version 17 is too old" },
+        { [](FakeCamera& c) { c.id.firmwareVersion = 5; }, "davis:0", "USB firmware version 5 is too old" },
+        { [](FakeCamera& c) { c.openError = "LIBUSB_ERROR_BUSY"; }, "davis:0", "LIBUSB_ERROR_BUSY" },
+        { [](FakeCamera& c) { c.registers[{ 1, 0 }] = 0; }, "davis:0", "0 x 260 DVS array" },
+        { [](FakeCamera&) {}, "davis:3", "davis:3: no such DAVIS camera; connected: 00000490 (usb 001:010)" },
+        { [](FakeCamera&) {}, "davis:12345678", "no such DAVIS camera" },
+    };
+    for (const Case& c : cases)
+    {
+        FakeUsb usb;
+        c.spoil(*usb.add(5, 346, 260));
+        EventCapture cap;
+        cap.set(EVENT_CAP_PROP_EXCEPTION_MODE, 0);
+        EXPECT_FALSE(cap.open(c.source));
+        EXPECT_FALSE(cap.isOpened());
+        EXPECT_NE(std::string::npos, cap.getLastError().find(c.message)) << cap.getLastError();
+    }
+}
+
+TEST(Event_Capture_Davis, list_devices_identifies_each_camera)
+{
+    FakeUsb usb;
+    usb.add(5, 346, 260, false, true);
+    usb.add(2, 180, 240, true, false)->openError = "LIBUSB_ERROR_ACCESS";
+    const std::vector<EventDeviceInfo> list = listEventDevices();
+    ASSERT_EQ(2u, list.size());
+    EXPECT_EQ("davis:00000490", list[0].source);
+    EXPECT_EQ("DAVIS346B", list[0].model);
+    EXPECT_EQ(Size(346, 260), list[0].sensorSize);
+    EXPECT_EQ(18, list[0].logicVersion);
+    EXPECT_TRUE(list[0].master);
+    EXPECT_TRUE(list[0].error.empty());
+    EXPECT_EQ("davis:00000491", list[1].source);
+    EXPECT_EQ(-1, list[1].logicVersion);
+    EXPECT_NE(std::string::npos, list[1].error.find("LIBUSB_ERROR_ACCESS"));
+}
+
+TEST(Event_Capture_Davis, real_transport_without_cameras_lists_none_and_open_says_why)
+{
+    // The libusb transport on a machine without a DAVIS (CI): an empty list, open() false with a message.
+    // Skipped where a camera is actually connected.
+    if (!listEventDevices().empty())
+        throw SkipTestException("a DAVIS camera is connected to this machine");
+    EventCapture cap;
+    cap.set(EVENT_CAP_PROP_EXCEPTION_MODE, 0);
+    EXPECT_FALSE(cap.open("davis:0"));
+    EXPECT_NE(std::string::npos, cap.getLastError().find("no DAVIS camera is connected")) << cap.getLastError();
+}
+
+TEST(Event_Capture_Davis, unplug_ends_the_stream_with_a_status_and_release_returns)
+{
+    FakeUsb usb;
+    Ptr<FakeCamera> cam = usb.add(5, 346, 260);
+    const std::vector<Event> truth = randomEvents(3000, 346, 260, 3);
+    cam->afterReset = encodeEvents(truth);
+    cam->unplugWhenDrained = true;
+    EventCapture cap("davis:0");
+    std::vector<Event> all, packet;
+    cap.set(EVENT_CAP_PROP_BATCH_EVENTS, 700);
+    while (cap.read(packet))  // exception mode is on: the unplug is still a status, not an exception
+        all.insert(all.end(), packet.begin(), packet.end());
+    EXPECT_EQ(truth, all);  // everything sent before the unplug is delivered
+    EXPECT_NE(std::string::npos, cap.getLastError().find("davis:00000490 (DAVIS346B, usb 001:010): the camera was unplugged"))
+        << cap.getLastError();
+    EXPECT_FALSE(cap.read(packet));
+    cap.release();  // stop requests fail on a gone device; release still returns
+    EXPECT_FALSE(cap.isOpened());
+}
+
+TEST(Event_Capture_Davis, failed_transfers_and_a_full_queue_are_counted_not_silent)
+{
+    FakeUsb usb;
+    Ptr<FakeCamera> cam = usb.add(5, 346, 260);
+    const std::vector<Event> truth = randomEvents(20000, 346, 260, 4);
+    cam->afterReset = encodeEvents(truth);
+    cam->pushStatus(USB_BULK_TRANSFER_ERROR);  // before the reset: the stream goes on after it
+    cam->pushStatus(USB_BULK_TRANSFER_ERROR);
+    EventCapture cap;
+    cap.set(EVENT_CAP_PROP_QUEUE_CAPACITY, 2);
+    ASSERT_TRUE(cap.open("davis:0"));
+    std::this_thread::sleep_for(std::chrono::milliseconds(300));  // the reader thread outruns read()
+    cap.set(EVENT_CAP_PROP_BATCH_EVENTS, 1000);
+    std::vector<Event> delivered, packet;
+    while (delivered.size() + (size_t)cap.get(EVENT_CAP_PROP_DROPPED_EVENTS) < truth.size() && cap.read(packet))
+        delivered.insert(delivered.end(), packet.begin(), packet.end());
+    EXPECT_EQ(2, cap.get(EVENT_CAP_PROP_DROPPED_TRANSFERS));
+    const double dropped = cap.get(EVENT_CAP_PROP_DROPPED_EVENTS);
+    EXPECT_GT(dropped, 0);
+    EXPECT_EQ(truth.size(), delivered.size() + (size_t)dropped);  // every event delivered or counted
+    // What is delivered is a subsequence of what was sent, in order.
+    size_t j = 0;
+    for (const Event& e : delivered)
+    {
+        while (j < truth.size() && truth[j] != e)
+            j++;
+        ASSERT_LT(j, truth.size());
+        j++;
+    }
+}
+
+TEST(Event_Capture_Davis, stereo_pair_shares_the_master_clock)
+{
+    FakeUsb usb;
+    Ptr<FakeCamera> left = usb.add(5, 346, 260, false, false);  // slave
+    Ptr<FakeCamera> right = usb.add(5, 346, 260, false, true);  // master
+    right->slave = left.get();
+    const std::vector<Event> l = randomEvents(4000, 346, 260, 5), r = randomEvents(4000, 346, 260, 6);
+    left->afterReset = encodeWithClock(l);
+    right->afterReset = encodeWithClock(r);
+    left->pushData(encodeEvents(randomEvents(100, 346, 260, 7, 50000)));  // before the reset: skipped
+
+    EventCapture cap;
+    ASSERT_TRUE(cap.openStereo("davis:0", "davis:1"));
+    EXPECT_EQ(1, cap.get(EVENT_CAP_PROP_STEREO));
+    const std::vector<Event> merged = readEvents(cap, l.size() + r.size());
+    std::vector<Event> expected;
+    mergeStereoEvents(l, r, expected);
+    EXPECT_EQ(expected, merged);
+    // One reset pulse, from the master only, after both cameras run; the slave started first.
+    EXPECT_EQ(-1, usb.log->find(0, 0, 2, 1));
+    const int pulse = usb.log->find(1, 0, 2, 1);
+    EXPECT_GT(pulse, usb.log->find(0, 1, 3, 1));
+    EXPECT_GT(pulse, usb.log->find(1, 1, 3, 1));
+    EXPECT_LT(usb.log->find(0, 1, 3, 1), usb.log->find(1, 1, 3, 1));
+    EXPECT_EQ(1, left->resets);
+    EXPECT_EQ(1, right->resets);
+    // A reset asked of the pair pulses the master only; the cable carries it.
+    EXPECT_TRUE(cap.set(EVENT_CAP_PROP_DEVICE_TIMESTAMP_RESET, 1));
+    EXPECT_EQ(2, left->resets);
+    EXPECT_EQ(2, right->resets);
+}
+
+TEST(Event_Capture_Davis, stereo_without_sync_cable_is_refused)
+{
+    FakeUsb usb;
+    usb.add(5, 346, 260, false, true);
+    usb.add(5, 346, 260, false, true);
+    EventCapture cap;
+    cap.set(EVENT_CAP_PROP_EXCEPTION_MODE, 0);
+    EXPECT_FALSE(cap.openStereo("davis:0", "davis:1"));
+    EXPECT_NE(std::string::npos, cap.getLastError().find("both cameras report master")) << cap.getLastError();
+    EXPECT_NE(std::string::npos, cap.getLastError().find("sync cable")) << cap.getLastError();
+    EXPECT_FALSE(cap.openStereo("davis:0", "davis:0"));
+    EXPECT_NE(std::string::npos, cap.getLastError().find("are the same camera")) << cap.getLastError();
+    EXPECT_FALSE(cap.openStereo("davis:0", "some_file.aedat4"));
+    EXPECT_NE(std::string::npos, cap.getLastError().find("one live camera and one file")) << cap.getLastError();
+}
+
+TEST(Event_Capture_Davis, stereo_goes_on_while_one_camera_is_silent)
+{
+    // The right camera sees nothing, but its clock words say how far time has gone: the left events
+    // older than that are delivered instead of waiting for a right event that never comes.
+    FakeUsb usb;
+    Ptr<FakeCamera> left = usb.add(5, 346, 260, false, true);
+    Ptr<FakeCamera> right = usb.add(5, 346, 260, false, false);
+    left->slave = right.get();
+    const std::vector<Event> l = randomEvents(2000, 346, 260, 8);
+    left->afterReset = encodeEvents(l);
+    WordStream clock;
+    for (int64 t = 32768; t <= l.back().t + 32768; t += 32768)
+        clock.word(wrapWord(1));
+    right->afterReset = clock.bytes;
+    EventCapture cap;
+    ASSERT_TRUE(cap.openStereo("davis:0", "davis:1"));
+    const std::vector<Event> merged = readEvents(cap, l.size());
+    ASSERT_EQ(l.size(), merged.size());
+    for (size_t i = 0; i < l.size(); i++)
+        ASSERT_EQ(Event(l[i].t, l[i].x, l[i].y, l[i].p, CAMERA_LEFT), merged[i]);
+}
+
+TEST(Event_Capture_Davis, time_windows_close_on_the_camera_clock)
+{
+    // Events at 1 ms and 25 ms, then only the clock up to 98 ms: 10 ms windows from the first event
+    // come out as 1, 0, 1, 0, ... events, without waiting for an event after each window.
+    FakeUsb usb;
+    Ptr<FakeCamera> cam = usb.add(5, 346, 260);
+    std::vector<uint8_t> bytes = encodeEvents({ Event(1000, 3, 4, 1), Event(25000, 5, 6, 0) });
+    WordStream clock;
+    clock.word(wrapWord(1)).word(wrapWord(1)).word(timestampWord(32000));  // 65536 + 32000 us
+    bytes.insert(bytes.end(), clock.bytes.begin(), clock.bytes.end());
+    cam->afterReset = bytes;
+    EventCapture cap("davis:0");
+    cap.set(EVENT_CAP_PROP_WINDOW_US, 10000);
+    std::vector<size_t> sizes;
+    std::vector<Event> packet;
+    for (int k = 0; k < 9 && cap.read(packet); k++)
+        sizes.push_back(packet.size());
+    EXPECT_EQ(std::vector<size_t>({ 1, 0, 1, 0, 0, 0, 0, 0, 0 }), sizes);
+    EXPECT_EQ(91000, cap.get(EVENT_CAP_PROP_POS_US));
+}
+
+}}  // namespace
