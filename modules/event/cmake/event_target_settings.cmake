@@ -95,6 +95,9 @@ endfunction()
 function(opencv_event_configure_test target)
   set_target_properties(${target} PROPERTIES CXX_STANDARD 17 CXX_STANDARD_REQUIRED ON CXX_EXTENSIONS OFF)
   opencv_event_link_test_codecs(${target})
+  get_filename_component(source_root "${OPENCV_EVENT_MODULE_DIR}/../.." ABSOLUTE)
+  # The repository root: tests read its committed fixtures (the fuzzers' seed files, test/fuzz/corpus).
   target_compile_definitions(${target} PRIVATE
-    OPENCV_EVENT_SHARED_DATA_DEFAULT="${OPENCV_EVENT_SHARED_DATA_DEFAULT}")
+    OPENCV_EVENT_SHARED_DATA_DEFAULT="${OPENCV_EVENT_SHARED_DATA_DEFAULT}"
+    OPENCV_EVENT_SOURCE_ROOT="${source_root}")
 endfunction()

@@ -172,6 +172,13 @@ public:
         String selector;
         if (isLiveSource(path, api, selector))
             return openDavisReader(path, selector, opt);
+        if (api != EVENT_CAP_ROSBAG2 && !isRosBag2(path))
+        {
+            // Whatever the back-end: a missing file, a directory or an empty file is not a recording.
+            FileInput probe(path);
+            if (probe.size() == 0)
+                CV_Error_(Error::StsError, ("%s: empty file, not a recording", path.c_str()));
+        }
         int backend = api;
         if (backend == EVENT_CAP_ANY)
         {
@@ -180,13 +187,8 @@ public:
                 if (fmt == b.name)
                     backend = b.api;
             if (backend == EVENT_CAP_ANY)
-            {
-                FileInput probe(path);  // raises the precise reason when the file cannot be read at all
-                if (probe.size() == 0)
-                    CV_Error_(Error::StsError, ("%s: empty file, not a recording", path.c_str()));
                 CV_Error_(Error::StsError, ("%s: unknown event file format (first bytes match no supported "
                                             "format)", path.c_str()));
-            }
         }
         for (const Backend& b : kBackends)
             if (b.api == backend)

@@ -113,6 +113,8 @@ private:
             const int32_t overflow = (int32_t)le32(h + 12), capacity = (int32_t)le32(h + 16);
             if (size <= 0 || capacity < 0)
                 formatError(in_.path(), at, format("packet header with event size %d and capacity %d", size, capacity));
+            if (overflow < 0)  // a counter of 2^31 us wraps: never negative (found by fuzz_aedat3)
+                formatError(in_.path(), at, format("packet header with timestamp overflow counter %d", overflow));
             const int64 payload = (int64)size * capacity;
             if (in_.size() >= 0 && payload > in_.size() - in_.offset())
                 formatError(in_.path(), at, format("packet claims %lld bytes of events, only %lld left in the file",

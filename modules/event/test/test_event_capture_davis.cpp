@@ -601,7 +601,7 @@ TEST(Event_Capture_Davis, time_windows_close_on_the_camera_clock)
     clock.word(wrapWord(1)).word(wrapWord(1)).word(timestampWord(32000));  // 65536 + 32000 us
     bytes.insert(bytes.end(), clock.bytes.begin(), clock.bytes.end());
     cam->afterReset = bytes;
-    EventCapture cap("davis:0");
+    EventCapture cap("0", EVENT_CAP_DAVIS);  // the index alone, with the back-end named
     cap.set(EVENT_CAP_PROP_WINDOW_US, 10000);
     std::vector<size_t> sizes;
     std::vector<Event> packet;

@@ -1,0 +1,215 @@
+// This file is part of OpenCV project.
+// It is subject to the license terms in the LICENSE file found in the top-level directory
+// of this distribution and at http://opencv.org/license.html.
+
+// The bad-input matrix over every file back-end, on the fuzzers' seed files (test/fuzz/corpus, small valid
+// files built from the formats' byte layouts) and an AEDAT 4.0 file from EventWriter:
+//  - truncated at every byte: a cv::Exception naming the file, or a clean end; either way the events
+//    delivered are exactly the first events of the whole file (nothing invented, nothing skipped);
+//  - every header byte flipped: a cv::Exception naming the file, or events inside the sensor and in time order;
+//  - wrong magic, empty file, directory, absurd sizes: a cv::Exception naming the file and the problem.
+// Any other exception type, a crash or (under the sanitizers ctest) a memory error fails.
+
+#include "test_precomp.hpp"
+
+namespace opencv_test { namespace {
+
+std::string corpusDir()
+{
+    return std::string(OPENCV_EVENT_SOURCE_ROOT) + "/test/fuzz/corpus";
+}
+
+std::string readBytes(const std::string& path)
+{
+    std::ifstream in(path.c_str(), std::ios::binary);
+    return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+}
+
+struct Outcome
+{
+    std::vector<Event> events;
+    std::string error;  // empty: the stream ended cleanly
+    Size sensor;
+};
+
+// Reads @p bytes as a file of back-end @p api. Only cv::Exception may come out; anything else fails.
+Outcome readAs(const std::string& bytes, int api, const std::string& suffix)
+{
+    Outcome o;
+    const std::string path = writeTempFile(bytes, suffix);
+    try
+    {
+        EventCapture cap;
+        cap.open(path, api);
+        o.sensor = cap.getSensorSize();
+        o.events = readAllEvents(cap, 257);
+    }
+    catch (const cv::Exception& e)
+    {
+        o.error = e.err;
+        EXPECT_NE(std::string::npos, o.error.find(path)) << "the message does not name the file: " << o.error;
+    }
+    catch (const std::exception& e)
+    {
+        ADD_FAILURE() << "not a cv::Exception: " << e.what();
+    }
+    std::remove(path.c_str());
+    return o;
+}
+
+struct Sample
+{
+    std::string name;
+    int api;
+    std::string suffix;
+    std::string bytes;
+};
+
+std::vector<Sample> samples()
+{
+    const struct { const char* file; int api; const char* suffix; } seeds[] = {
+        { "text/rpg_seconds.txt", EVENT_CAP_TEXT, ".txt" },
+        { "text/size_line_us.txt", EVENT_CAP_TEXT, ".txt" },
+        { "text/stereo_camera_column.txt", EVENT_CAP_TEXT, ".txt" },
+        { "aedat2/davis240.aedat", EVENT_CAP_AEDAT2, ".aedat" },
+        { "aedat2/dvs128.aedat", EVENT_CAP_AEDAT2, ".aedat" },
+        { "aedat3/davis346.aedat", EVENT_CAP_AEDAT3, ".aedat" },
+        { "dat/cd.dat", EVENT_CAP_PROPHESEE_DAT, ".dat" },
+        { "raw/evt2.raw", EVENT_CAP_PROPHESEE_RAW, ".raw" },
+        { "raw/evt3.raw", EVENT_CAP_PROPHESEE_RAW, ".raw" },
+    };
+    std::vector<Sample> out;
+    for (const auto& s : seeds)
+    {
+        const std::string bytes = readBytes(corpusDir() + "/" + s.file);
+        if (bytes.empty())
+            CV_Error(cv::Error::StsError, "seed file missing: " + corpusDir() + "/" + s.file);
+        out.push_back({ s.file, s.api, s.suffix, bytes });
+    }
+    // AEDAT 4.0 from the module's writer (LZ4 packets).
+    RNG rng(9);
+    std::vector<Event> ev;
+    int64 t = 0;
+    for (int i = 0; i < 30; i++)
+        ev.emplace_back(t += rng.uniform(0, 200), rng.uniform(0, 346), rng.uniform(0, 260), rng.uniform(0, 2));
+    const std::string path = cv::tempfile(".aedat4");
+    {
+        EventWriter w(path, Size(346, 260));
+        w.write(std::vector<Event>(ev.begin(), ev.begin() + 10));
+        w.write(std::vector<Event>(ev.begin() + 10, ev.end()));
+    }
+    out.push_back({ "writer.aedat4", EVENT_CAP_AEDAT4, ".aedat4", readBytes(path) });
+    std::remove(path.c_str());
+    return out;
+}
+
+bool isPrefix(const std::vector<Event>& part, const std::vector<Event>& whole)
+{
+    return part.size() <= whole.size() && std::equal(part.begin(), part.end(), whole.begin());
+}
+
+TEST(Event_BadInput, truncated_at_every_byte_delivers_a_prefix_then_ends_or_names_the_file)
+{
+    for (const Sample& s : samples())
+    {
+        SCOPED_TRACE(s.name);
+        const Outcome full = readAs(s.bytes, s.api, s.suffix);
+        ASSERT_TRUE(full.error.empty()) << full.error;
+        ASSERT_GE(full.events.size(), 10u);
+        int errors = 0;
+        for (size_t len = 0; len < s.bytes.size(); len++)
+        {
+            const Outcome o = readAs(s.bytes.substr(0, len), s.api, s.suffix);
+            ASSERT_TRUE(isPrefix(o.events, full.events)) << "cut at byte " << len << ": events not a prefix";
+            errors += !o.error.empty();
+        }
+        // Cuts inside the header and inside records must be reported, not read as a shorter recording.
+        EXPECT_GT(errors, 0);
+    }
+}
+
+TEST(Event_BadInput, every_header_byte_flipped_is_rejected_or_read_within_bounds)
+{
+    for (const Sample& s : samples())
+    {
+        SCOPED_TRACE(s.name);
+        const size_t header = std::min<size_t>(s.bytes.size(), 160);
+        for (size_t i = 0; i < header; i++)
+            for (int mask : { 0x01, 0x80, 0xFF })
+            {
+                std::string bad = s.bytes;
+                bad[i] = (char)(bad[i] ^ mask);
+                const Outcome o = readAs(bad, s.api, s.suffix);
+                if (!o.error.empty())
+                    continue;
+                for (size_t k = 0; k < o.events.size(); k++)
+                {
+                    const Event& e = o.events[k];
+                    if (!o.sensor.empty())
+                    {
+                        ASSERT_TRUE(e.x >= 0 && e.y >= 0 && e.x < o.sensor.width && e.y < o.sensor.height)
+                            << "byte " << i << " ^ " << mask << ": event outside the sensor";
+                    }
+                    ASSERT_TRUE(k == 0 || o.events[k - 1].t <= e.t) << "byte " << i << " ^ " << mask << ": time order";
+                }
+            }
+    }
+}
+
+TEST(Event_BadInput, wrong_magic_empty_file_and_directory_name_the_file_and_the_problem)
+{
+    for (const Sample& s : samples())
+    {
+        if (s.api == EVENT_CAP_TEXT)
+            continue;  // text has no magic
+        SCOPED_TRACE(s.name);
+        std::string bad = s.bytes;
+        bad[0] = '\x01';  // neither a header character nor text
+        const Outcome detected = readAs(bad, EVENT_CAP_ANY, s.suffix);
+        EXPECT_NE(std::string::npos, detected.error.find("unknown event file format")) << detected.error;
+        if (s.api != EVENT_CAP_AEDAT2)  // AEDAT 1.0 has no magic: forced, such a file is records from byte 0
+        {
+            const Outcome forced = readAs(bad, s.api, s.suffix);
+            EXPECT_FALSE(forced.error.empty()) << "a broken magic was accepted";
+        }
+        const Outcome empty = readAs(std::string(), s.api, s.suffix);
+        EXPECT_FALSE(empty.error.empty());
+    }
+    const std::string dir = cv::tempfile("_dir");
+    ASSERT_EQ(0, ::mkdir(dir.c_str(), 0700));
+    for (int api : { EVENT_CAP_ANY, EVENT_CAP_TEXT, EVENT_CAP_AEDAT2, EVENT_CAP_AEDAT4, EVENT_CAP_PROPHESEE_RAW })
+    {
+        EventCapture cap;
+        cap.set(EVENT_CAP_PROP_EXCEPTION_MODE, 0);
+        EXPECT_FALSE(cap.open(dir, api));
+        EXPECT_NE(std::string::npos, cap.getLastError().find(dir)) << cap.getLastError();
+    }
+    ::rmdir(dir.c_str());
+}
+
+TEST(Event_BadInput, absurd_sizes_in_headers_are_refused_without_allocating_them)
+{
+    // AEDAT 3.1 packet headers that claim 2^31 - 1 events of 2^31 bytes (and of 8 bytes): the reader must
+    // check them against the file, not allocate them (the sanitizers ctest would abort on a 16 EiB request).
+    const std::string header = "#!AER-DAT3.1\r\n#Format: RAW\r\n#Source 1: DAVIS346B\r\n#!END-HEADER\r\n";
+    for (uint32_t eventSize : { 8u, 0x7FFFFFFFu, 0u })
+    {
+        std::string f = header;
+        const uint32_t fields[7] = { 8 /* size, replaced */, 4, 0, 0x7FFFFFFF, 0x7FFFFFFF, 0x7FFFFFFF, 0 };
+        f += std::string("\x01\x00\x01\x00", 4);  // polarity packet, source 1
+        for (int k = 0; k < 6; k++)
+        {
+            const uint32_t v = k == 0 ? eventSize : fields[k];
+            for (int b = 0; b < 4; b++)
+                f.push_back((char)((v >> (8 * b)) & 0xFF));
+        }
+        f += std::string(64, '\0');
+        const Outcome o = readAs(f, EVENT_CAP_AEDAT3, ".aedat");
+        EXPECT_FALSE(o.error.empty()) << "event size " << eventSize;
+    }
+    // Text: a size line of 2^40 x 2^40 pixels must not become a 2^80-pixel sensor.
+    const Outcome text = readAs("1099511627776 1099511627776\n0 1 1 1\n", EVENT_CAP_TEXT, ".txt");
+    EXPECT_TRUE(!text.error.empty() || text.sensor.width <= 32768) << text.sensor;
+}
+
+}}  // namespace
