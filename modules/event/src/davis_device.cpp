@@ -134,8 +134,7 @@ void DavisDevice::sendDefaultConfig()
             writeConfig(BIAS, b.param, b.value);
     else
         for (const ChipSetting& b : kDavis346Biases)
-            if (b.param != 4 || chip == DAVIS346A || chip == DAVIS346B || chip == DAVIS346C || chip == DAVIS640 ||
-                chip == DAVIS640H)
+            if (b.param != 4 || hasTestAdc(chip))
                 writeConfig(BIAS, b.param, b.value);
     for (const ChipSetting& f : kCommonChipFields)
         writeConfig(BIAS, f.param, f.value);
@@ -143,7 +142,7 @@ void DavisDevice::sendDefaultConfig()
         writeConfig(BIAS, kFieldSpecialPixelControl, 0);
     if (!isDavis240(chip))
         writeConfig(BIAS, kFieldSelectGrayCounter, 1);
-    if (chip == DAVIS346A || chip == DAVIS346B || chip == DAVIS346C || chip == DAVIS640 || chip == DAVIS640H)
+    if (hasTestAdc(chip))
         writeConfig(BIAS, kFieldTestAdc, 0);
 
     // FPGA: drop data rather than stall the sensor when USB falls behind; events only.

@@ -81,6 +81,11 @@ inline const char* chipName(int chip)
 }
 
 inline bool isDavis240(int chip) { return chip == DAVIS240A || chip == DAVIS240B || chip == DAVIS240C; }
+/** DAVIS346 and DAVIS640 chips: they have the AdcTestVoltage bias (index 4) and the TestADC chip field. */
+inline bool hasTestAdc(int chip)
+{
+    return chip == DAVIS346A || chip == DAVIS346B || chip == DAVIS346C || chip == DAVIS640 || chip == DAVIS640H;
+}
 
 /** One value of the chip configuration: module 5 parameter (bias index < 128, shift-register field >= 128). */
 struct ChipSetting

@@ -454,6 +454,24 @@ bool guardedOpen(EventCapture::Impl& impl, Open open)
     }
 }
 
+// Runs a change of the open source (seek, a camera setting); on failure, as the exception mode says, the error
+// is raised or only recorded (getLastError()) and false returned. The source stays open.
+template<typename Change>
+bool guardedChange(EventCapture::Impl& impl, Change change)
+{
+    try
+    {
+        return change();
+    }
+    catch (const cv::Exception& e)
+    {
+        impl.lastError = e.err;
+        if (impl.exceptionMode)
+            throw;
+        return false;
+    }
+}
+
 }  // namespace
 
 bool EventCapture::open(const String& source, int apiPreference)
@@ -607,18 +625,10 @@ bool EventCapture::set(int propId, double value)
         String selector;
         if (!s.reader || Impl::isLiveSource(s.openedPath, s.openedApi, selector))
             return false;  // a live camera cannot seek
-        try
-        {
+        return guardedChange(s, [&]() {
             s.seek((int64)std::llround(value));
-        }
-        catch (const cv::Exception& e)
-        {
-            s.lastError = e.err;
-            if (s.exceptionMode)
-                throw;
-            return false;
-        }
-        return true;
+            return true;
+        });
     }
     case EVENT_CAP_PROP_TEXT_TIME_UNIT:
         if (v < EVENT_TIME_UNIT_AUTO || v > EVENT_TIME_UNIT_NANOSECONDS) return false;
@@ -649,17 +659,7 @@ bool EventCapture::set(int propId, double value)
             s.options.deviceSettings.emplace_back(propId, value);  // applied by open() of a live camera
             return true;
         }
-        try
-        {
-            return s.reader->setProperty(propId, value);
-        }
-        catch (const cv::Exception& e)
-        {
-            s.lastError = e.err;
-            if (s.exceptionMode)
-                throw;
-            return false;
-        }
+        return guardedChange(s, [&]() { return s.reader->setProperty(propId, value); });
     }
 }
 
