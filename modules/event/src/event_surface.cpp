@@ -3,6 +3,7 @@
 // of this distribution and at http://opencv.org/license.html.
 
 #include "precomp.hpp"
+#include "timestamp_math.hpp"
 
 #include <limits>
 
@@ -84,7 +85,9 @@ public:
 
     void getSurface(int polarity, OutputArray surface, int ddepth, double originUs) const CV_OVERRIDE
     {
-        const int64 origin = (int64)std::llround(originUs);
+        // Clamped into int64 before the conversion (out of range it would be undefined); the differences are
+        // then taken in int64 where they fit, so that timestamps near 2^63 keep their microseconds.
+        const int64 origin = (int64)std::llround(std::max(-9.2233720368547748e18, std::min(9.2233720368547748e18, originUs)));
         CV_CheckType(ddepth, ddepth == CV_64F || ddepth == CV_32S, "EventSurface::getSurface: CV_64F or CV_32S");
         const int p = checkPolarity(polarity, true);
         surface.create(size_, ddepth);
@@ -97,17 +100,17 @@ public:
                                       : times_[index(x, y, p)];
                 if (ddepth == CV_64F)
                     out.at<double>(y, x) = t == NO_EVENT ? -std::numeric_limits<double>::infinity()
-                                                         : (double)(t - origin);
+                                                         : timeDifference(t, origin);
                 else
                     out.at<int>(y, x) = t == NO_EVENT ? INT_MIN
-                                                      : (int)std::max<int64>(INT_MIN + 1, std::min<int64>(INT_MAX, t - origin));
+                                                      : (int)std::max<double>(INT_MIN + 1, std::min<double>(INT_MAX, timeDifference(t, origin)));
             }
         }
     }
 
     void renderTimeSurface(double tUs, double tau, OutputArray dst, int ddepth, int polarity) const CV_OVERRIDE
     {
-        const int64 t = (int64)std::llround(tUs);
+        const double t = tUs;
         CV_CheckType(ddepth, ddepth == CV_8U || ddepth == CV_32F, "EventSurface::renderTimeSurface: CV_8U or CV_32F");
         if (!(tau > 0))
             CV_Error_(Error::StsBadArg, ("EventSurface::renderTimeSurface: tau must be > 0 us, got %g", tau));
@@ -121,7 +124,7 @@ public:
             {
                 const int64 last = p < 0 ? std::max(times_[index(x, y, 0)], times_[index(x, y, 1)])
                                          : times_[index(x, y, p)];
-                row[x] = (last == NO_EVENT || last > t) ? 0.f : (float)std::exp(-(double)(t - last) * invTau);
+                row[x] = (last == NO_EVENT || (double)last > t) ? 0.f : (float)std::exp(-(t - (double)last) * invTau);
             }
         }
         if (ddepth == CV_32F)
@@ -165,17 +168,19 @@ public:
     String getDefaultName() const CV_OVERRIDE { return "EventSurface"; }
 
 private:
+    // Inside the sensor, and not at INT64_MIN, which is NO_EVENT: stored, it would make the pixel look empty.
     bool inside(const Event& e) const
     {
-        return (unsigned)e.x < (unsigned)size_.width && (unsigned)e.y < (unsigned)size_.height;
+        return (unsigned)e.x < (unsigned)size_.width && (unsigned)e.y < (unsigned)size_.height && e.t != NO_EVENT;
     }
 
     void outOfRange(const Event& e, int index) const
     {
         CV_Error_(Error::StsOutOfRange,
-                  ("EventSurface: event%s%s at (x=%d, y=%d), t=%lld us, is outside the %d x %d sensor",
-                   index >= 0 ? " #" : "", index >= 0 ? std::to_string(index).c_str() : "", e.x, e.y,
-                   (long long)e.t, size_.width, size_.height));
+                  ("EventSurface: event%s%s at (x=%d, y=%d), t=%lld us, is %s", index >= 0 ? " #" : "",
+                   index >= 0 ? std::to_string(index).c_str() : "", e.x, e.y, (long long)e.t,
+                   e.t == NO_EVENT ? "at INT64_MIN, the reserved NO_EVENT time"
+                                   : cv::format("outside the %d x %d sensor", size_.width, size_.height).c_str()));
     }
 
     void checkPixel(int x, int y) const

@@ -36,9 +36,7 @@ void FrameSgbmMatcher::process(const std::vector<Point>& pixels, const std::vect
     size_t begin = 0;
     while (begin < pixels.size())
     {
-        // floor division: windows [k w, (k + 1) w) also for negative times
-        const int64 t = times[begin];
-        const int64 k = t >= 0 ? t / windowUs_ : -((-t + windowUs_ - 1) / windowUs_);
+        const int64 k = windowIndex(times[begin]);
         if (k != window_)
         {
             window_ = k;
@@ -46,11 +44,19 @@ void FrameSgbmMatcher::process(const std::vector<Point>& pixels, const std::vect
                 f.setTo(Scalar::all(0));
         }
         size_t end = begin;
-        while (end < pixels.size() && times[end] < (window_ + 1) * windowUs_)
+        while (end < pixels.size() && windowIndex(times[end]) == k)
             end++;
         computeWindow(pixels, cameras, begin, end, disparity);
         begin = end;
     }
+}
+
+int64 FrameSgbmMatcher::windowIndex(int64 t) const
+{
+    // Floor division, so that windows are [k w, (k + 1) w) also for negative times; neither the quotient nor
+    // the remainder can overflow, whereas k w or (k + 1) w can near the int64 limits.
+    const int64 q = t / windowUs_, r = t % windowUs_;
+    return r < 0 ? q - 1 : q;
 }
 
 void FrameSgbmMatcher::computeWindow(const std::vector<Point>& pixels, const std::vector<uchar>& cameras, size_t begin,
@@ -62,11 +68,20 @@ void FrameSgbmMatcher::computeWindow(const std::vector<Point>& pixels, const std
             uchar& v = frames_[cameras[i]].at<uchar>(pixels[i]);
             v = (uchar)std::min(255, v + 64);
         }
+    // StereoSGBM needs an image wider than its disparity range plus its block; a narrower sensor is padded on
+    // the right with empty columns (no events there, so nothing changes for the real ones).
+    Mat frameLeft = frames_[0], frameRight = frames_[1];
+    const int minWidth = sgbm_->getNumDisparities() + sgbm_->getBlockSize() + 1;
+    if (size_.width < minWidth)
+    {
+        copyMakeBorder(frames_[0], frameLeft, 0, 0, 0, minWidth - size_.width, BORDER_CONSTANT, Scalar::all(0));
+        copyMakeBorder(frames_[1], frameRight, 0, 0, 0, minWidth - size_.width, BORDER_CONSTANT, Scalar::all(0));
+    }
     Mat left, right, flippedLeft, flippedRight, flippedDisparity;
-    sgbm_->compute(frames_[0], frames_[1], left);
+    sgbm_->compute(frameLeft, frameRight, left);
     // The right sensor's view: mirror both frames and swap them.
-    flip(frames_[1], flippedRight, 1);
-    flip(frames_[0], flippedLeft, 1);
+    flip(frameRight, flippedRight, 1);
+    flip(frameLeft, flippedLeft, 1);
     sgbm_->compute(flippedRight, flippedLeft, flippedDisparity);
     flip(flippedDisparity, right, 1);
     for (size_t i = begin; i < end; i++)

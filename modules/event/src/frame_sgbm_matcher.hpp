@@ -27,6 +27,7 @@ public:
                  std::vector<float>& disparity);
 
 private:
+    int64 windowIndex(int64 t) const;
     void computeWindow(const std::vector<Point>& pixels, const std::vector<uchar>& cameras, size_t begin, size_t end,
                        std::vector<float>& disparity);
 

@@ -6,6 +6,7 @@
 // prediction shortcut of Hadviger et al. 2019. See lifetime_estimator.hpp for the method.
 
 #include "precomp.hpp"
+#include "timestamp_math.hpp"
 
 #include <Eigen/Dense>
 
@@ -72,7 +73,7 @@ public:
         double a = 0, b = 0;
         status = LIFETIME_NOISE;
         Prediction& pred = predictions_[idx];
-        if (usePrediction_ && pred.valid && std::abs((double)(e.t - pred.t)) <= predictionTolerance_)
+        if (usePrediction_ && pred.valid && std::abs(timeDifference(e.t, pred.t)) <= predictionTolerance_)
         {
             a = pred.a;
             b = pred.b;
@@ -252,6 +253,9 @@ private:
         if ((unsigned)e.x >= (unsigned)size_.width || (unsigned)e.y >= (unsigned)size_.height)
             CV_Error_(Error::StsOutOfRange, ("LifetimeEstimator: event at (x=%d, y=%d), t=%lld us, is outside the "
                                              "%d x %d sensor", e.x, e.y, (long long)e.t, size_.width, size_.height));
+        if (e.t == EventSurface::NO_EVENT)
+            CV_Error_(Error::StsOutOfRange, ("LifetimeEstimator: event at (x=%d, y=%d) has t = INT64_MIN, which is "
+                                             "reserved for EventSurface::NO_EVENT", e.x, e.y));
     }
 
     size_t index(int x, int y, int p) const { return (size_t)p * size_.area() + (size_t)y * size_.width + x; }
@@ -261,7 +265,7 @@ private:
     {
         const int r = window_ / 2;
         points_.clear();
-        const int64 oldest = e.t - (int64)timeWindow_;
+        const int64 oldest = timeBefore(e.t, (int64)timeWindow_);
         for (int dy = -r; dy <= r; dy++)
         {
             const int y = e.y + dy;
@@ -352,7 +356,8 @@ private:
         Prediction& q = predictions_[index(x, y, p)];
         q.a = (float)a;
         q.b = (float)b;
-        q.t = e.t + (int64)std::llround(1000.0 * (a * dx + b * dy));
+        const int64 step = (int64)std::llround(1000.0 * (a * dx + b * dy));  // the plane's time to that pixel
+        q.t = step >= 0 ? timeAfter(e.t, step) : timeBefore(e.t, -step);
         q.valid = true;
     }
 

@@ -6,6 +6,7 @@
 // fixed-interval baselines, and the frame + SGBM baseline. See stereo_event_matcher.hpp for the method.
 
 #include "precomp.hpp"
+#include "timestamp_math.hpp"
 #include "ascii.hpp"
 #include "frame_sgbm_matcher.hpp"
 #include "zou_descriptor_map.hpp"
@@ -152,7 +153,7 @@ public:
         else if (est.lifetime > 0)
             activeFor = std::max<int64>(1, std::min<int64>((int64)std::llround(est.lifetime), maxLifetime_));
         if (activeFor > 0)
-            maps_[c].activate(r.x, r.y, p, e.t + activeFor, est.lifetime, est.flow);
+            maps_[c].activate(r.x, r.y, p, timeAfter(e.t, activeFor), est.lifetime, est.flow);
         else
             maps_[c].deactivate(r.x, r.y, p);
 
@@ -455,6 +456,9 @@ private:
         if ((unsigned)e.x >= (unsigned)size_.width || (unsigned)e.y >= (unsigned)size_.height)
             CV_Error_(Error::StsOutOfRange, ("StereoEventMatcher: event at (x=%d, y=%d), t=%lld us, camera %d, is outside "
                                              "the %d x %d sensor", e.x, e.y, (long long)e.t, e.camera, size_.width, size_.height));
+        if (e.t == EventSurface::NO_EVENT)
+            CV_Error_(Error::StsOutOfRange, ("StereoEventMatcher: event (x=%d, y=%d, camera %d) has t = INT64_MIN, which is "
+                                             "reserved for EventSurface::NO_EVENT", e.x, e.y, e.camera));
         if (e.t < lastTime_)
             CV_Error_(Error::StsBadArg, ("StereoEventMatcher: event at t=%lld us (x=%d, y=%d, camera %d) is earlier than the "
                                          "previous one (t=%lld us): events of both sensors must come merged in time order "
@@ -627,7 +631,7 @@ private:
         RenderState& rs = render_[c];
         const size_t i = (size_t)r.y * size_.width + r.x;
         rs.t[i] = t;
-        rs.until[i] = t + activeFor;
+        rs.until[i] = timeAfter(t, activeFor);
         rs.disparity[i] = disparity;
     }
 

@@ -12,6 +12,8 @@
 
 #include "test_precomp.hpp"
 
+#include <unistd.h>
+
 namespace opencv_test { namespace {
 
 std::string corpusDir()
@@ -185,6 +187,32 @@ TEST(Event_BadInput, wrong_magic_empty_file_and_directory_name_the_file_and_the_
         EXPECT_NE(std::string::npos, cap.getLastError().find(dir)) << cap.getLastError();
     }
     ::rmdir(dir.c_str());
+}
+
+// Root reads any file, so as root this test is skipped; the ctest opencv_test_event_unprivileged runs it
+// again as user nobody (setpriv), where the permission bits apply.
+TEST(Event_BadInput, unreadable_file_names_the_file_and_the_reason)
+{
+    if (::geteuid() == 0)
+        throw SkipTestException("running as root, which reads any file (ctest opencv_test_event_unprivileged runs this as nobody)");
+    for (const Sample& s : samples())
+    {
+        SCOPED_TRACE(s.name);
+        const std::string path = writeTempFile(s.bytes, s.suffix);
+        ASSERT_EQ(0, ::chmod(path.c_str(), 0));
+        for (int api : { (int)EVENT_CAP_ANY, s.api })
+        {
+            EventCapture cap;
+            cap.set(EVENT_CAP_PROP_EXCEPTION_MODE, 0);
+            EXPECT_FALSE(cap.open(path, api));
+            const std::string error = cap.getLastError();
+            EXPECT_NE(std::string::npos, error.find(path)) << error;
+            EXPECT_NE(std::string::npos, error.find("ermission denied")) << error;
+            cap.set(EVENT_CAP_PROP_EXCEPTION_MODE, 1);
+            EXPECT_THROW(cap.open(path, api), cv::Exception);
+        }
+        std::remove(path.c_str());
+    }
 }
 
 TEST(Event_BadInput, absurd_sizes_in_headers_are_refused_without_allocating_them)
