@@ -193,6 +193,10 @@ private:
     {
         if (n.integral && timeScale_ == 1.0)
             return n.whole;
+        // Beyond +-2^63 us (292,000 years) a time cannot be stored; refused rather than wrapped.
+        if (!(std::abs(n.value * timeScale_) < 9.2e18))
+            formatError(in_.path(), lineOffset_, format("line %d: timestamp %g is out of range: \"%s\"", lineNumber_,
+                                                        n.value, line_.c_str()));
         if (n.fracDigits >= 0 && timeScale_ == 1e6 && n.fracDigits <= 12)
         {
             // seconds.fraction: whole * 10^6 + fraction scaled to 6 digits, rounded half away from zero.
@@ -253,7 +257,11 @@ private:
         int camera = CAMERA_LEFT;
         if (camera_ >= 0)
         {
-            const int c = (int)values[camera_].value;
+            const Number& cn = values[camera_];
+            if (!cn.integral || !(std::abs(cn.value) < 1e9))
+                formatError(in_.path(), lineOffset_, format("line %d: camera value %g is not 0 or 1: \"%s\"", lineNumber_,
+                                                            cn.value, line_.c_str()));
+            const int c = (int)cn.value;
             const int other = opt_.textLeftCameraValue == 0 ? 1 : 0;
             if (c == opt_.textLeftCameraValue)
                 camera = CAMERA_LEFT;

@@ -8,10 +8,10 @@
 #include "precomp.hpp"
 #include "timestamp_math.hpp"
 #include "ascii.hpp"
+#include "descriptor_cost.hpp"
 #include "frame_sgbm_matcher.hpp"
 #include "zou_descriptor_map.hpp"
 
-#include "opencv2/core/hal/intrin.hpp"
 #include "opencv2/imgproc.hpp"
 
 #include <limits>
@@ -20,19 +20,6 @@ namespace cv {
 namespace event {
 
 namespace {
-
-// SAD of two 32-byte descriptors (bytes 24..31 are zero in both).
-inline unsigned descriptorSad(const uchar* a, const uchar* b)
-{
-#if CV_SIMD128
-    return v_reduce_sad(v_load(a), v_load(b)) + v_reduce_sad(v_load(a + 16), v_load(b + 16));
-#else
-    unsigned s = 0;
-    for (int i = 0; i < 24; i++)
-        s += (unsigned)std::abs((int)a[i] - (int)b[i]);
-    return s;
-#endif
-}
 
 struct MatchResult
 {
@@ -482,16 +469,8 @@ private:
             if (!candidate_[k])
                 continue;
             const int d = minDisparity_ + (int)k;
-            unsigned sum = 0;
-            for (int y = y0; y <= y1; y++)
-            {
-                const uchar* a = self.descriptor(r.x + x0, r.y + y);
-                const uchar* b = other.descriptor(r.x + x0 + sign * d, r.y + y);
-                for (int x = 0; x <= x1 - x0; x++)
-                    sum += descriptorSad(a + (size_t)x * ZouDescriptorMap::DESCRIPTOR_BYTES,
-                                         b + (size_t)x * ZouDescriptorMap::DESCRIPTOR_BYTES);
-            }
-            cost_[k] += sum;
+            cost_[k] += descriptorRectSad(self.descriptor(r.x + x0, r.y + y0), other.descriptor(r.x + x0 + sign * d, r.y + y0),
+                                          self.descriptorRowStep(), other.descriptorRowStep(), x1 - x0 + 1, y1 - y0 + 1);
         }
         return mass;
     }
@@ -499,15 +478,11 @@ private:
     // Sum of the descriptor values over [x0, x1] x [y0, y1] relative to q: the cost of matching against nothing.
     static unsigned rectMass(const ZouDescriptorMap& map, Point q, int x0, int x1, int y0, int y1)
     {
-        static const uchar zeros[ZouDescriptorMap::DESCRIPTOR_BYTES] = { 0 };
-        unsigned mass = 0;
-        for (int y = y0; y <= y1; y++)
-        {
-            const uchar* a = map.descriptor(q.x + x0, q.y + y);
-            for (int x = 0; x <= x1 - x0; x++)
-                mass += descriptorSad(a + (size_t)x * ZouDescriptorMap::DESCRIPTOR_BYTES, zeros);
-        }
-        return mass;
+        // Against one row of zero descriptors, used for every row (step 0); windows are at most 31 wide.
+        static const uchar zeros[32 * ZouDescriptorMap::DESCRIPTOR_BYTES] = { 0 };
+        CV_DbgAssert(x1 - x0 < 32);
+        return descriptorRectSad(map.descriptor(q.x + x0, q.y + y0), zeros, map.descriptorRowStep(), 0, x1 - x0 + 1,
+                                 y1 - y0 + 1);
     }
 
     MatchResult match(int c, Point r, int p)
@@ -611,17 +586,21 @@ private:
         const ZouDescriptorMap& map = maps_[c];
         const int h = costWindow_ / 2;
         neighbours_.clear();
+        const int x0 = std::max(0, x - h), x1 = std::min(size_.width - 1, x + h);
         for (int yy = std::max(0, y - h); yy <= std::min(size_.height - 1, y + h); yy++)
-            for (int xx = std::max(0, x - h); xx <= std::min(size_.width - 1, x + h); xx++)
-                if (map.isActive(xx, yy, p) && map.lifetime(xx, yy, p) > 0)
-                    neighbours_.push_back(Point(xx, yy));
+        {
+            const float* row = map.lifetimeRow(yy, p);
+            for (int xx = x0; xx <= x1; xx++)
+                if (row[xx] > 0)
+                    neighbours_.push_back(Neighbour{ row[xx], xx, yy });
+        }
         if (neighbours_.empty())
             return false;
         const size_t mid = neighbours_.size() / 2;
         std::nth_element(neighbours_.begin(), neighbours_.begin() + (std::ptrdiff_t)mid, neighbours_.end(),
-                         [&](const Point& a, const Point& b) { return map.lifetime(a.x, a.y, p) < map.lifetime(b.x, b.y, p); });
-        const Point q = neighbours_[mid];
-        lifetime = map.lifetime(q.x, q.y, p);
+                         [](const Neighbour& a, const Neighbour& b) { return a.lifetime < b.lifetime; });
+        const Neighbour& q = neighbours_[mid];
+        lifetime = q.lifetime;
         flow = map.flow(q.x, q.y, p);
         return true;
     }
@@ -702,7 +681,12 @@ private:
     int64 lastTime_ = std::numeric_limits<int64>::min();
     std::vector<uchar> candidate_;
     std::vector<unsigned> cost_;
-    std::vector<Point> neighbours_;
+    struct Neighbour
+    {
+        float lifetime;
+        int x, y;
+    };
+    std::vector<Neighbour> neighbours_;
     std::vector<float> disparities_;
 };
 

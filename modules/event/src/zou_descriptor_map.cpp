@@ -133,6 +133,7 @@ void ZouDescriptorMap::deactivateId(int i)
 {
     expiry_.remove(i);
     active_[i] = 0;
+    lifetime_[i] = 0.f;
     const int area = size_.area();
     const int p = i / area, x = (i % area) % size_.width, y = (i % area) / size_.width;
     for (int k = 0; k < (int)offsets_.size(); k++)

@@ -46,6 +46,9 @@ public:
     // An active event of polarity p lies within the maximum vector length of (x, y).
     bool hasStructure(int x, int y, int p) const { return nearest_[id(x, y, p)] != NONE; }
     float lifetime(int x, int y, int p) const { return lifetime_[id(x, y, p)]; }
+    // Row y of the lifetimes of polarity p: > 0 exactly where an active event has a lifetime (an inactive
+    // pixel's is 0), so that a window can be scanned on one array.
+    const float* lifetimeRow(int y, int p) const { return &lifetime_[(size_t)id(0, y, p)]; }
     Vec2f flow(int x, int y, int p) const { return flow_[id(x, y, p)]; }
 
     // Makes the event at (x, y, p) the pixel's active one until expiry (exclusive) [us].

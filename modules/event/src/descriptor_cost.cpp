@@ -1,0 +1,110 @@
+// This file is part of OpenCV project.
+// It is subject to the license terms in the LICENSE file found in the top-level directory
+// of this distribution and at http://opencv.org/license.html.
+
+#include "precomp.hpp"
+#include "descriptor_cost.hpp"
+
+#if (defined(__x86_64__) || defined(__i386__)) && defined(__GNUC__)
+#include <immintrin.h>
+#define OPENCV_EVENT_X86_KERNELS 1
+#endif
+
+namespace cv {
+namespace event {
+
+enum { DESCRIPTOR_BYTES = 32 };
+
+unsigned descriptorRectSadScalar(const uchar* a, const uchar* b, size_t aStep, size_t bStep, int width, int height)
+{
+    unsigned sum = 0;
+    for (int y = 0; y < height; y++, a += aStep, b += bStep)
+        for (int x = 0; x < width * DESCRIPTOR_BYTES; x++)
+            sum += (unsigned)std::abs((int)a[x] - (int)b[x]);
+    return sum;
+}
+
+#ifdef OPENCV_EVENT_X86_KERNELS
+
+static unsigned rectSadSse2(const uchar* a, const uchar* b, size_t aStep, size_t bStep, int width, int height)
+{
+    __m128i acc = _mm_setzero_si128();
+    for (int y = 0; y < height; y++, a += aStep, b += bStep)
+        for (int x = 0; x < width * DESCRIPTOR_BYTES; x += DESCRIPTOR_BYTES)
+        {
+            const __m128i lo = _mm_sad_epu8(_mm_loadu_si128((const __m128i*)(a + x)), _mm_loadu_si128((const __m128i*)(b + x)));
+            const __m128i hi = _mm_sad_epu8(_mm_loadu_si128((const __m128i*)(a + x + 16)),
+                                            _mm_loadu_si128((const __m128i*)(b + x + 16)));
+            acc = _mm_add_epi64(acc, _mm_add_epi64(lo, hi));
+        }
+    return (unsigned)(_mm_cvtsi128_si32(acc) + _mm_cvtsi128_si32(_mm_unpackhi_epi64(acc, acc)));
+}
+
+__attribute__((target("avx2"))) static unsigned rectSadAvx2(const uchar* a, const uchar* b, size_t aStep, size_t bStep,
+                                                            int width, int height)
+{
+    // Two accumulators so that consecutive adds do not wait on each other.
+    __m256i acc = _mm256_setzero_si256(), acc2 = _mm256_setzero_si256();
+    const int bytes = width * DESCRIPTOR_BYTES;
+    for (int y = 0; y < height; y++, a += aStep, b += bStep)
+    {
+        int x = 0;
+        for (; x + 2 * DESCRIPTOR_BYTES <= bytes; x += 2 * DESCRIPTOR_BYTES)
+        {
+            acc = _mm256_add_epi64(acc, _mm256_sad_epu8(_mm256_loadu_si256((const __m256i*)(a + x)),
+                                                        _mm256_loadu_si256((const __m256i*)(b + x))));
+            acc2 = _mm256_add_epi64(acc2, _mm256_sad_epu8(_mm256_loadu_si256((const __m256i*)(a + x + 32)),
+                                                          _mm256_loadu_si256((const __m256i*)(b + x + 32))));
+        }
+        if (x < bytes)
+            acc = _mm256_add_epi64(acc, _mm256_sad_epu8(_mm256_loadu_si256((const __m256i*)(a + x)),
+                                                        _mm256_loadu_si256((const __m256i*)(b + x))));
+    }
+    acc = _mm256_add_epi64(acc, acc2);
+    const __m128i s = _mm_add_epi64(_mm256_castsi256_si128(acc), _mm256_extracti128_si256(acc, 1));
+    return (unsigned)(_mm_cvtsi128_si32(s) + _mm_cvtsi128_si32(_mm_unpackhi_epi64(s, s)));
+}
+
+typedef unsigned (*RectSadFn)(const uchar*, const uchar*, size_t, size_t, int, int);
+
+struct Kernel
+{
+    RectSadFn fn;
+    const char* name;
+};
+
+// Chosen on first use (not during static initialisation, when OpenCV's CPU detection may not have run yet),
+// with OpenCV's own detection, so that OPENCV_CPU_DISABLE=AVX2 also turns the AVX2 version off.
+static const Kernel& kernel()
+{
+    static const Kernel k = cv::checkHardwareSupport(CV_CPU_AVX2) ? Kernel{ rectSadAvx2, "avx2" }
+                                                                  : Kernel{ rectSadSse2, "sse2" };
+    return k;
+}
+
+unsigned descriptorRectSad(const uchar* a, const uchar* b, size_t aStep, size_t bStep, int width, int height)
+{
+    return kernel().fn(a, b, aStep, bStep, width, height);
+}
+
+const char* descriptorRectSadKernel()
+{
+    return kernel().name;
+}
+
+#else
+
+unsigned descriptorRectSad(const uchar* a, const uchar* b, size_t aStep, size_t bStep, int width, int height)
+{
+    return descriptorRectSadScalar(a, b, aStep, bStep, width, height);
+}
+
+const char* descriptorRectSadKernel()
+{
+    return "scalar";
+}
+
+#endif
+
+}  // namespace event
+}  // namespace cv

@@ -1,0 +1,31 @@
+// This file is part of OpenCV project.
+// It is subject to the license terms in the LICENSE file found in the top-level directory
+// of this distribution and at http://opencv.org/license.html.
+
+#ifndef OPENCV_EVENT_DESCRIPTOR_COST_HPP
+#define OPENCV_EVENT_DESCRIPTOR_COST_HPP
+
+#include "opencv2/core.hpp"
+
+namespace cv {
+namespace event {
+
+/** Sum of absolute differences between two rectangles of 32-byte descriptors (ZouDescriptorMap layout:
+24 counts, then 8 zero bytes), @p width x @p height descriptors; rows are @p aStep / @p bStep bytes apart
+(a step of 0 reuses one row, e.g. a row of zeros).
+
+This is the matcher's inner loop. The AVX2 version (chosen at run time when the CPU has it) adds one
+32-byte SAD per descriptor into 64-bit lanes and reduces once per call; the SSE2 one does the same with two
+16-byte halves; elsewhere a scalar loop. All give the same integers. */
+unsigned descriptorRectSad(const uchar* a, const uchar* b, size_t aStep, size_t bStep, int width, int height);
+
+/** The scalar version of descriptorRectSad: the reference the tests compare the SIMD ones with. */
+unsigned descriptorRectSadScalar(const uchar* a, const uchar* b, size_t aStep, size_t bStep, int width, int height);
+
+/** Name of the version descriptorRectSad uses on this CPU ("avx2", "sse2" or "scalar"), for benchmarks. */
+const char* descriptorRectSadKernel();
+
+}  // namespace event
+}  // namespace cv
+
+#endif  // OPENCV_EVENT_DESCRIPTOR_COST_HPP
