@@ -1,17 +1,24 @@
 // The paper's Table I, reproduced: per scene, the events that keep a lifetime and the processing time of
 // DECOUPLED and COUPLED stereo, measured in the same run, with the COUPLED / DECOUPLED time ratio; next to
 // them FIXED_INTERVAL and FRAME_SGBM, and, where ground truth exists, density and share within 1 px.
+// A second table gives, per mode, Mev/s, the per-event latency percentiles (p50 / p99, each event timed on
+// its own through processEvent; FRAME_SGBM: per 33 ms window, as its events wait for their window) and the
+// memory the matcher added (peak resident memory during the run minus the resident memory before it).
 //
 //   event_stereo_table [--duration-ms 500] [--scenes plane,two_planes,faint_line,cluttered]
-//                      [--shared DIR] [--markdown FILE]
+//                      [--shared DIR] [--markdown FILE] [--soak-events N]
 //
 // Simulated scenes come with ground truth; the real TUM pairs in DIR/stereo_dvs128_tum (default
 // ../shared/data) are added when present. Events are generated/read before timing: the times are the
 // matcher's alone (single thread), in windows of 33 ms as a live pipeline would get them.
+// --soak-events N streams N events through one COUPLED matcher (the first scene replayed with its time
+// shifted on every pass) and prints the resident memory at every tenth: it stays flat.
 
 #include <opencv2/event.hpp>
 
+#include <algorithm>
 #include <chrono>
+#include <cstring>
 #include <fstream>
 #include <iomanip>
 #include <iostream>
@@ -36,7 +43,36 @@ struct Result
 {
     double seconds = 0;
     int64 withLifetime = 0, withDisparity = 0, candidates = 0, estimated = 0, within1 = 0;
+    double p50 = 0, p99 = 0;  // latency per event [us] (FRAME_SGBM: per window)
+    double addedMiB = 0;      // peak resident memory during the run minus before it
 };
+
+std::string num(double v, int precision);
+
+double residentMiB(const char* field)
+{
+    std::ifstream status("/proc/self/status");
+    std::string line;
+    const size_t n = std::strlen(field);
+    while (std::getline(status, line))
+        if (line.compare(0, n, field) == 0)
+            return std::stod(line.substr(n)) / 1024.0;
+    return -1;
+}
+
+void resetPeakResident()
+{
+    std::ofstream("/proc/self/clear_refs") << "5";  // VmHWM := VmRSS
+}
+
+double percentile(std::vector<float>& v, double q)
+{
+    if (v.empty())
+        return 0;
+    const size_t k = std::min(v.size() - 1, (size_t)(q * (double)v.size()));
+    std::nth_element(v.begin(), v.begin() + (std::ptrdiff_t)k, v.end());
+    return v[k];
+}
 
 Recording simulated(const std::string& scene, double durationMs)
 {
@@ -80,14 +116,41 @@ bool real(const std::string& path, const std::string& name, Recording& r)
 
 Result run(const Recording& rec, int mode)
 {
+    resetPeakResident();
+    const double before = residentMiB("VmRSS:");
     Ptr<StereoEventMatcher> m = StereoEventMatcher::create(rec.size, mode);
     Result r;
     Mat d, lt, fl;
+    std::vector<float> latency;
+    latency.reserve((size_t)rec.events);
+    StereoEventEstimate est;
     for (size_t w = 0; w < rec.windows.size(); w++)
     {
-        const auto t0 = std::chrono::steady_clock::now();
-        m->process(rec.windows[w], d, lt, fl);
-        r.seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+        const std::vector<Event>& ev = rec.windows[w];
+        if (mode == STEREO_FRAME_SGBM)
+        {
+            const auto t0 = std::chrono::steady_clock::now();
+            m->process(ev, d, lt, fl);
+            const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+            r.seconds += s;
+            latency.push_back((float)(s * 1e6));
+        }
+        else
+        {
+            // One event at a time, as a live loop runs it (identical results to process()).
+            d.create((int)ev.size(), 1, CV_32F);
+            fl.create((int)ev.size(), 1, CV_32S);
+            for (size_t i = 0; i < ev.size(); i++)
+            {
+                const auto t0 = std::chrono::steady_clock::now();
+                m->processEvent(ev[i], est);
+                const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+                r.seconds += s;
+                latency.push_back((float)(s * 1e6));
+                d.at<float>((int)i) = est.disparity;
+                fl.at<int>((int)i) = est.flags;
+            }
+        }
         for (int i = 0; i < d.rows; i++)
         {
             const int f = fl.at<int>(i);
@@ -106,7 +169,46 @@ Result run(const Recording& rec, int mode)
             }
         }
     }
+    r.p50 = percentile(latency, 0.5);
+    r.p99 = percentile(latency, 0.99);
+    latency = std::vector<float>();
+    r.addedMiB = residentMiB("VmHWM:") - before;
     return r;
+}
+
+// Streams `events` events through one COUPLED matcher, replaying the recording with its time shifted on
+// every pass; prints the resident memory at every tenth.
+void soak(const Recording& rec, int64 events)
+{
+    Ptr<StereoEventMatcher> m = StereoEventMatcher::create(rec.size, STEREO_COUPLED);
+    const int64 span = rec.windows.back().back().t - rec.windows.front().front().t + 33000;
+    int64 done = 0, shift = 0, nextReport = 0;
+    std::vector<Event> shifted;
+    Mat d;
+    const auto t0 = std::chrono::steady_clock::now();
+    std::cout << "\nsoak: " << events << " events of " << rec.name << " through COUPLED\n\n| events | resident MiB | Mev/s so far |\n|---|---|---|\n";
+    while (done < events)
+    {
+        for (const std::vector<Event>& w : rec.windows)
+        {
+            if (done >= nextReport)
+            {
+                const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+                std::cout << "| " << done << " | " << num(residentMiB("VmRSS:"), 1) << " | "
+                          << num(s > 0 ? (double)done / s / 1e6 : 0, 3) << " |" << std::endl;
+                nextReport += events / 10;
+            }
+            if (done >= events)
+                break;
+            shifted = w;
+            for (Event& e : shifted)
+                e.t += shift;
+            m->process(shifted, d);
+            done += (int64)w.size();
+        }
+        shift += span;
+    }
+    std::cout << "| " << done << " | " << num(residentMiB("VmRSS:"), 1) << " | - |\n";
 }
 
 std::string pct(int64 a, int64 b)
@@ -128,6 +230,7 @@ std::string num(double v, int precision)
 int main(int argc, char** argv)
 {
     double durationMs = 500;
+    int64 soakEvents = 0;
     std::string scenes = "plane,two_planes,faint_line,cluttered", shared = "../shared/data", markdown;
     for (int i = 1; i + 1 < argc; i += 2)
     {
@@ -136,9 +239,11 @@ int main(int argc, char** argv)
         else if (a == "--scenes") scenes = v;
         else if (a == "--shared") shared = v;
         else if (a == "--markdown") markdown = v;
+        else if (a == "--soak-events") soakEvents = (int64)std::stod(v);
         else
         {
-            std::cerr << "usage: event_stereo_table [--duration-ms MS] [--scenes a,b,...] [--shared DIR] [--markdown FILE]\n";
+            std::cerr << "usage: event_stereo_table [--duration-ms MS] [--scenes a,b,...] [--shared DIR] [--markdown FILE] "
+                         "[--soak-events N]\n";
             return 2;
         }
     }
@@ -164,6 +269,8 @@ int main(int argc, char** argv)
                  "| COUPLED / DECOUPLED time | COUPLED Mev/s | density / within 1 px: COUPLED | DECOUPLED | FIXED | SGBM |\n"
               << "|---|---|---|---|---|---|---|---|---|---|---|---|\n";
         double coupledSeconds = 0, decoupledSeconds = 0;
+        std::ostringstream speed;
+        speed << "| recording | mode | Mev/s | latency p50 | latency p99 | memory added |\n|---|---|---|---|---|---|\n";
         for (const Recording& rec : recordings)
         {
             std::cerr << "running " << rec.name << " (" << rec.events << " events)...\n";
@@ -174,6 +281,12 @@ int main(int argc, char** argv)
             const Result& d = res[STEREO_DECOUPLED];
             coupledSeconds += c.seconds;
             decoupledSeconds += d.seconds;
+            for (int mode = STEREO_COUPLED; mode <= STEREO_FRAME_SGBM; mode++)
+                speed << "| " << rec.name << " | " << getStereoModeName(mode) << " | "
+                      << num((double)rec.events / std::max(1e-12, res[mode].seconds) / 1e6, 3) << " | "
+                      << num(res[mode].p50, 1) << (mode == STEREO_FRAME_SGBM ? " us / window" : " us") << " | "
+                      << num(res[mode].p99, 1) << (mode == STEREO_FRAME_SGBM ? " us / window" : " us") << " | "
+                      << num(res[mode].addedMiB, 1) << " MiB |\n";
             auto accuracy = [&](const Result& r) {
                 return rec.truth.empty() ? pct(r.withDisparity, rec.events) + " of all"
                                          : pct(r.estimated, r.candidates) + " / " + pct(r.within1, r.estimated);
@@ -185,10 +298,12 @@ int main(int argc, char** argv)
                   << accuracy(res[STEREO_FRAME_SGBM]) << " |\n";
         }
         table << "\nCOUPLED / DECOUPLED time over all recordings: " << num(coupledSeconds / std::max(1e-12, decoupledSeconds), 2)
-              << " (the paper reports about 0.5)\n";
+              << " (the paper reports about 0.5)\n\n" << speed.str();
         std::cout << table.str();
         if (!markdown.empty())
             std::ofstream(markdown) << table.str();
+        if (soakEvents > 0 && !recordings.empty())
+            soak(recordings.front(), soakEvents);
         return 0;
     }
     catch (const std::exception& e)

@@ -8,11 +8,14 @@ namespace opencv_test { namespace {
 
 // Time per event of the lifetime estimator on 100 ms of the simulator's moving-line scene, with and without
 // the prediction shortcut (the outputs are compared in the unit tests).
-typedef TestBaseWithParam<bool> Event_Lifetime_Process;
+// The fitted path (prediction off: every event fits a plane) against the predicted one (on: most events
+// of a moving line reuse their neighbour's plane), by sensor size.
+CV_ENUM(LifetimeSensor, SENSOR_DAVIS240, SENSOR_DAVIS346, SENSOR_PROPHESEE_GEN3)
+typedef TestBaseWithParam<tuple<LifetimeSensor, bool>> Event_Lifetime_Process;
 
-PERF_TEST_P(Event_Lifetime_Process, moving_line, testing::Bool())
+PERF_TEST_P(Event_Lifetime_Process, moving_line, testing::Combine(LifetimeSensor::all(), testing::Bool()))
 {
-    Ptr<StereoEventSimulator> sim = StereoEventSimulator::create("moving_line");
+    Ptr<StereoEventSimulator> sim = StereoEventSimulator::create("moving_line", get<0>(GetParam()));
     std::vector<Event> ev, left;
     Mat gt;
     sim->generate(100000, ev, gt);
@@ -20,8 +23,9 @@ PERF_TEST_P(Event_Lifetime_Process, moving_line, testing::Bool())
         if (e.camera == CAMERA_LEFT)
             left.push_back(e);
     Ptr<LifetimeEstimator> est = LifetimeEstimator::create(sim->getSensorSize());
-    est->setUsePrediction(GetParam());
+    est->setUsePrediction(get<1>(GetParam()));
     Mat lifetimes;
+    RecordProperty("events", (int)left.size());
     TEST_CYCLE()
     {
         est->reset();

@@ -17,13 +17,14 @@ namespace event {
 This is the matcher's inner loop. The AVX2 version (chosen at run time when the CPU has it) adds one
 32-byte SAD per descriptor into 64-bit lanes and reduces once per call; the SSE2 one does the same with two
 16-byte halves; elsewhere a scalar loop. All give the same integers. */
-unsigned descriptorRectSad(const uchar* a, const uchar* b, size_t aStep, size_t bStep, int width, int height);
+CV_EXPORTS unsigned descriptorRectSad(const uchar* a, const uchar* b, size_t aStep, size_t bStep, int width, int height);
 
-/** The scalar version of descriptorRectSad: the reference the tests compare the SIMD ones with. */
-unsigned descriptorRectSadScalar(const uchar* a, const uchar* b, size_t aStep, size_t bStep, int width, int height);
+/** The scalar version of descriptorRectSad: the reference the tests compare the SIMD ones with.
+(Exported for opencv_test_event only; not part of the public API.) */
+CV_EXPORTS unsigned descriptorRectSadScalar(const uchar* a, const uchar* b, size_t aStep, size_t bStep, int width, int height);
 
 /** Name of the version descriptorRectSad uses on this CPU ("avx2", "sse2" or "scalar"), for benchmarks. */
-const char* descriptorRectSadKernel();
+CV_EXPORTS const char* descriptorRectSadKernel();
 
 }  // namespace event
 }  // namespace cv

@@ -373,6 +373,30 @@ private:
         return g;
     }
 
+    // Poisson count by inversion. exp(-lambda) underflows to 0 beyond lambda ~ 745 (high noise rates on
+    // large sensors), after which inversion would never stop; a Poisson(lambda) count is the sum of
+    // Poisson(lambda / k) counts, so larger means are drawn in chunks of at most 500.
+    int poissonCount(double lambda)
+    {
+        int total = 0;
+        while (lambda > 0)
+        {
+            const double chunk = std::min(lambda, 500.0);
+            lambda -= chunk;
+            int count = 0;
+            double p = std::exp(-chunk), cdf = p;
+            const double u = rng_.uniform(0.0, 1.0);
+            while (u > cdf && p > 0)
+            {
+                count++;
+                p *= chunk / count;
+                cdf += p;
+            }
+            total += count;
+        }
+        return total;
+    }
+
     void addNoise(double t0, double t1, std::vector<std::pair<Event, std::array<float, 6>>>& out)
     {
         if (!(s_.noiseRateHz > 0))
@@ -381,15 +405,7 @@ private:
         const double expected = s_.noiseRateHz * (t1 - t0) * 1e-6 * sz.area();
         for (int c = 0; c < 2; c++)
         {
-            // Poisson count by inversion (expected counts per step are small).
-            int count = 0;
-            double p = std::exp(-expected), cdf = p, u = rng_.uniform(0.0, 1.0);
-            while (u > cdf && count < 100000)
-            {
-                count++;
-                p *= expected / count;
-                cdf += p;
-            }
+            const int count = poissonCount(expected);
             for (int k = 0; k < count; k++)
             {
                 const int x = rng_.uniform(0, sz.width), y = rng_.uniform(0, sz.height);

@@ -25,7 +25,7 @@ Activating an event can only shorten vectors within the maximum length of it; de
 re-searches only the pixels whose nearest event it was. Each vector change moves one vote in N x N
 descriptors. The descriptor map has a zero margin around the image so that cost windows can run past the
 border without checks. Expiry: an ExpiryHeap over pixel x polarity. */
-class ZouDescriptorMap
+class CV_EXPORTS ZouDescriptorMap  // exported for opencv_perf_event only; not public API
 {
 public:
     enum { DESCRIPTOR_BYTES = 32, BINS = 12, NONE = 255 };

@@ -231,3 +231,26 @@ TEST(Event_Simulator, recording_round_trip_through_event_writer_and_ground_truth
 }
 
 }} // namespace
+
+namespace opencv_test { namespace {
+
+// Background activity at a high rate on a large sensor: the count of noise events is Poisson with mean
+// rate x pixels x cameras x duration (the inversion used to stop at 100000 per step once exp(-mean)
+// underflowed, giving 100x too many events).
+TEST(Event_Simulator, background_activity_rate_holds_at_high_rates)
+{
+    Ptr<StereoEventSimulator> scene = StereoEventSimulator::create("plane", SENSOR_DAVIS346);
+    SimulatorSettings settings = scene->getSettings();
+    settings.noiseRateHz = 50;
+    Ptr<StereoEventSimulator> sim = StereoEventSimulator::create(scene->getPlanes(), settings);
+    std::vector<Event> ev;
+    Mat gt;
+    sim->generate(20000, ev, gt);
+    int64 noise = 0;
+    for (int i = 0; i < gt.rows; i++)
+        noise += ((int)gt.at<float>(i, GT_FLAGS) & GT_FLAG_NOISE) != 0;
+    const double expected = 50.0 * 346 * 260 * 2 * 0.02;  // 179,920; standard deviation 424
+    EXPECT_NEAR((double)noise, expected, 5 * std::sqrt(expected));
+}
+
+}}  // namespace

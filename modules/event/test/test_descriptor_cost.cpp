@@ -1,0 +1,48 @@
+// This file is part of OpenCV project.
+// It is subject to the license terms in the LICENSE file found in the top-level directory
+// of this distribution and at http://opencv.org/license.html.
+
+// The matcher's SIMD cost kernel against its scalar reference: the same integers for every window shape
+// the matcher uses (1..31 wide, 1..31 high), row steps of the descriptor map and of 0 (a row of zeros),
+// unaligned starts, and counts up to 255 (the largest a descriptor byte holds).
+
+#include "test_precomp.hpp"
+#include "../src/descriptor_cost.hpp"
+
+namespace opencv_test { namespace {
+
+TEST(Event_DescriptorCost, simd_kernel_equals_scalar_reference)
+{
+    RNG rng(11);
+    const int stride = 40, rows = 34, bytes = 32;
+    std::vector<uchar> a((size_t)stride * rows * bytes + 64), b(a.size());
+    for (size_t i = 0; i < a.size(); i++)
+    {
+        // Sparse counts like real descriptors, and some saturated ones; bytes 24..31 stay 0 as in the map.
+        const bool used = (i % bytes) < 24;
+        a[i] = used ? (uchar)(rng.uniform(0, 4) == 0 ? rng.uniform(0, 256) : 0) : 0;
+        b[i] = used ? (uchar)(rng.uniform(0, 4) == 0 ? rng.uniform(0, 256) : 0) : 0;
+    }
+    const size_t step = (size_t)stride * bytes;
+    int checked = 0;
+    for (int w = 1; w <= 31; w += 1)
+        for (int h = 1; h <= 31; h += 3)
+            for (int offset : { 0, 1, 7 })  // descriptors 0, 1 or 7 along: no alignment is assumed
+            {
+                const uchar* pa = &a[(size_t)offset * bytes];
+                const uchar* pb = &b[(size_t)(offset + 2) * bytes + step];
+                ASSERT_EQ(descriptorRectSadScalar(pa, pb, step, step, w, h), descriptorRectSad(pa, pb, step, step, w, h))
+                    << w << " x " << h << " at " << offset << " (" << descriptorRectSadKernel() << ")";
+                ASSERT_EQ(descriptorRectSadScalar(pa, pb, step, 0, w, h), descriptorRectSad(pa, pb, step, 0, w, h))
+                    << w << " x " << h << " against one row";
+                checked++;
+            }
+    EXPECT_EQ(checked, 31 * 11 * 3);
+    // Closed form: all 24 counts 255 against zeros over 31 x 31 descriptors.
+    std::vector<uchar> full((size_t)31 * bytes, 0), zeros(full.size(), 0);
+    for (size_t i = 0; i < full.size(); i++)
+        full[i] = (i % bytes) < 24 ? 255 : 0;
+    EXPECT_EQ(descriptorRectSad(full.data(), zeros.data(), 0, 0, 31, 31), 31u * 31u * 24u * 255u);
+}
+
+}}  // namespace
