@@ -16,7 +16,7 @@ void formatError(const String& path, int64 offset, const String& what)
     CV_Error_(Error::StsParseError, ("%s: byte %lld: %s", path.c_str(), (long long)offset, what.c_str()));
 }
 
-FileInput::FileInput(const String& path) : path_(path), buffer_(1 << 20)
+FileInput::FileInput(const String& path) : path_(path), buffer_((1 << 20) + kReadPadding)
 {
     struct stat st;
     if (::stat(path.c_str(), &st) != 0)
@@ -38,7 +38,7 @@ FileInput::~FileInput()
 
 bool FileInput::refill()
 {
-    const size_t got = std::fread(buffer_.data(), 1, buffer_.size(), file_);
+    const size_t got = std::fread(buffer_.data(), 1, buffer_.size() - kReadPadding, file_);
     if (got == 0 && std::ferror(file_))
         CV_Error_(Error::StsError, ("%s: byte %lld: read error: %s", path_.c_str(), (long long)fileOffset_,
                                     std::strerror(errno)));
@@ -94,6 +94,31 @@ bool FileInput::readLine(std::string& line)
     if (!line.empty() && line.back() == '\r')
         line.pop_back();
     return any;
+}
+
+bool FileInput::readLineView(const char*& begin, const char*& end, std::string& spill)
+{
+    if (pos_ == end_ && !refill())
+        return false;
+    const char* nl = static_cast<const char*>(std::memchr(pos_, '\n', (size_t)(end_ - pos_)));
+    if (nl)
+    {
+        begin = pos_;
+        end = nl;
+        pos_ = nl + 1;
+    }
+    else
+    {
+        readLine(spill);  // the rest of this buffer, the next refill up to its newline
+        const size_t n = spill.size();
+        spill.append(kReadPadding, '\0');  // the same readable padding as the buffer's
+        begin = spill.data();
+        end = begin + n;
+        return true;
+    }
+    if (end > begin && end[-1] == '\r')
+        end--;
+    return true;
 }
 
 int FileInput::peek()

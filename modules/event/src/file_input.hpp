@@ -23,6 +23,8 @@ namespace detail {
 class FileInput
 {
 public:
+    enum { kReadPadding = 16 };
+
     /** Opens @p path for reading; raises cv::Error::StsError naming the file when it is missing, a
     directory, unreadable, ... */
     explicit FileInput(const String& path);
@@ -43,6 +45,10 @@ public:
     void readExact(void* dst, size_t n, const char* what);
     /** Reads one line without its "\n" / "\r\n"; false at the end of the file. */
     bool readLine(std::string& line);
+    /** The same without a copy: [@p begin, @p end) is the line inside the read buffer, valid until the next
+    read; a line that crosses a refill (or ends the file without a newline) is gathered in @p spill. At least
+    kReadPadding bytes after @p end can be read (their values are unspecified), for word-wise parsers. */
+    bool readLineView(const char*& begin, const char*& end, std::string& spill);
     /** Peeks at the next byte without consuming it; -1 at the end. */
     int peek();
     /** Moves to an absolute offset. */

@@ -79,14 +79,21 @@ public:
         while (produced < kReaderChunk)
         {
             if (havePending_)
+            {
                 havePending_ = false;
+                const size_t n = line_.size();
+                line_.append(FileInput::kReadPadding, '\0');  // readable past the end, as the buffer's lines
+                begin_ = line_.data();
+                end_ = begin_ + n;
+            }
             else
             {
                 lineOffset_ = in_.offset();
-                if (!in_.readLine(line_))
+                // The line stays in the file's buffer: no copy on the hot path.
+                if (!in_.readLineView(begin_, end_, line_))
                     break;
                 lineNumber_++;
-                if (isComment(line_))
+                if (isComment(begin_, end_))
                     continue;
             }
             const Event e = parse();
@@ -101,8 +108,14 @@ public:
 private:
     static bool isComment(const std::string& line)
     {
-        size_t i = line.find_first_not_of(" \t");
-        return i == std::string::npos || line[i] == '#' || line[i] == '%';
+        return isComment(line.data(), line.data() + line.size());
+    }
+
+    static bool isComment(const char* p, const char* end)
+    {
+        while (p < end && (*p == ' ' || *p == '\t'))
+            p++;
+        return p == end || *p == '#' || *p == '%';
     }
 
     static bool isSeparator(char c) { return c == ' ' || c == '\t' || c == ',' || c == ';'; }
@@ -143,40 +156,91 @@ private:
         double value = 0;
     };
 
-    static const char* scanNumber(const char* p, Number& n)
+    // Up to 8 leading decimal digits of the 8 bytes at p, read as one word (the line is followed by
+    // FileInput::kReadPadding readable bytes): their count (clamped to `end`, -1 when the clamp cuts a digit
+    // run, so that the caller takes the byte-wise path) and their value.
+    static int wordDigits(const char* p, const char* end, int64& value)
+    {
+#if defined(__BYTE_ORDER__) && __BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__ && defined(__GNUC__)
+        uint64 v;
+        std::memcpy(&v, p, 8);
+        const uint64 x = v ^ 0x3030303030303030ULL;  // digits become 0..9
+        // A byte is not a digit when its high nibble is set or it is 10..15. Carries of the addition start
+        // only at non-digits and move to later bytes, so the first non-digit is found exactly.
+        const uint64 nonDigit = (x & 0xF0F0F0F0F0F0F0F0ULL) | ((x + 0x0606060606060606ULL) & 0x1010101010101010ULL);
+        const int k = nonDigit ? __builtin_ctzll(nonDigit) / 8 : 8;
+        if (k > end - p)
+            return -1;
+        if (k == 0)
+        {
+            value = 0;
+            return 0;
+        }
+        uint64 d = x << (8 * (8 - k));  // right-aligned: leading zero digits
+        d = d * 10 + (d >> 8);
+        d = (((d & 0x000000FF000000FFULL) * (100 + (1000000ULL << 32))) +
+             (((d >> 16) & 0x000000FF000000FFULL) * (1 + (10000ULL << 32)))) >> 32;
+        value = (int64)d;
+        return k;
+#else
+        (void)p; (void)end; (void)value;
+        return -1;
+#endif
+    }
+
+    // Digits at p into `acc` (at most `limit` of them in all, counted in `count`); returns the stop.
+    static const char* scanDigits(const char* p, const char* end, int64& acc, int& count, int limit)
+    {
+        static const int64 pow10[9] = { 1, 10, 100, 1000, 10000, 100000, 1000000, 10000000, 100000000 };
+        while (count + 8 <= limit)
+        {
+            int64 v;
+            const int k = wordDigits(p, end, v);
+            if (k < 0)
+                break;
+            acc = acc * pow10[k] + v;
+            count += k;
+            p += k;
+            if (k < 8)
+                return p;
+        }
+        while (p < end && *p >= '0' && *p <= '9' && count < limit)
+        {
+            acc = acc * 10 + (*p++ - '0');
+            count++;
+        }
+        return p;
+    }
+
+    // Scans one number in [p, end); returns where it stops (p itself when there is none).
+    static const char* scanNumber(const char* p, const char* end, Number& n)
     {
         const char* start = p;
         bool negative = false;
-        if (*p == '-' || *p == '+')
+        if (p < end && (*p == '-' || *p == '+'))
             negative = *p++ == '-';
         int digits = 0;
         int64 whole = 0;
-        while (*p >= '0' && *p <= '9' && digits < 18)
-        {
-            whole = whole * 10 + (*p++ - '0');
-            digits++;
-        }
+        p = scanDigits(p, end, whole, digits, 18);
         int64 frac = 0;
         int fracDigits = 0;
-        if (*p == '.')
+        const bool point = p < end && *p == '.';
+        if (point)
+            p = scanDigits(p + 1, end, frac, fracDigits, 18);
+        if ((digits == 0 && fracDigits == 0) || (p < end && ((*p >= '0' && *p <= '9') || *p == 'e' || *p == 'E')))
         {
-            p++;
-            while (*p >= '0' && *p <= '9' && fracDigits < 18)
-            {
-                frac = frac * 10 + (*p++ - '0');
-                fracDigits++;
-            }
-        }
-        if ((digits == 0 && fracDigits == 0) || (*p >= '0' && *p <= '9') || *p == 'e' || *p == 'E')
-        {
-            // Exponent, or more digits than the fast path keeps: let strtod decide.
-            char* end = nullptr;
-            n.value = std::strtod(start, &end);
+            // Exponent, or more digits than the fast path keeps: let strtod decide, on a terminated copy.
+            char token[64];
+            const size_t len = std::min<size_t>(sizeof(token) - 1, (size_t)(end - start));
+            std::memcpy(token, start, len);
+            token[len] = '\0';
+            char* stop = nullptr;
+            n.value = std::strtod(token, &stop);
             n.integral = false;
             n.fracDigits = -1;  // no exact decimal form
-            return end == start ? start : end;
+            return start + (stop - token);
         }
-        n.integral = fracDigits == 0 && p[-1] != '.';
+        n.integral = !point;
         n.whole = negative ? -whole : whole;
         n.frac = negative ? -frac : frac;
         n.fracDigits = fracDigits;
@@ -197,7 +261,7 @@ private:
         // Beyond +-2^63 us (292,000 years) a time cannot be stored; refused rather than wrapped.
         if (!(std::abs(n.value * timeScale_) < 9.2e18))
             formatError(in_.path(), lineOffset_, format("line %d: timestamp %g is out of range: \"%s\"", lineNumber_,
-                                                        n.value, line_.c_str()));
+                                                        n.value, lineText().c_str()));
         if (n.fracDigits >= 0 && timeScale_ == 1e6 && n.fracDigits <= 12)
         {
             // seconds.fraction: whole * 10^6 + fraction scaled to 6 digits, rounded half away from zero.
@@ -226,28 +290,28 @@ private:
         // them per line took 40 % of the reader's time).
         Number* values = columns16_;
         const int want = std::min(columns_, 16);
-        const char* p = line_.c_str();
+        const char* p = begin_;
         int n = 0;
         while (n < want)
         {
-            while (*p && isSeparator(*p))
+            while (p < end_ && isSeparator(*p))
                 p++;
-            if (!*p)
+            if (p == end_)
                 break;
-            const char* end = scanNumber(p, values[n]);
-            if (end == p || (*end && !isSeparator(*end)))
+            const char* end = scanNumber(p, end_, values[n]);
+            if (end == p || (end < end_ && !isSeparator(*end)))
                 formatError(in_.path(), lineOffset_, format("line %d: column %d is not a number: \"%s\"",
-                                                            lineNumber_, n + 1, line_.c_str()));
+                                                            lineNumber_, n + 1, lineText().c_str()));
             p = end;
             n++;
         }
         if (n < want)
             formatError(in_.path(), lineOffset_, format("line %d: %d columns, expected %d: \"%s\"", lineNumber_, n,
-                                                        columns_, line_.c_str()));
+                                                        columns_, lineText().c_str()));
         const Number& tn = values[opt_.textColumnT];
         if (integerTime_ && !tn.integral)
             formatError(in_.path(), lineOffset_, format("line %d: timestamp \"%s\" is not an integer number of "
-                                                        "microseconds, as the first line's was", lineNumber_, line_.c_str()));
+                                                        "microseconds, as the first line's was", lineNumber_, lineText().c_str()));
         const int64 t = toMicroseconds(tn);
         const int base = opt_.textOneBased ? 1 : 0;
         const Number& xn = values[opt_.textColumnX];
@@ -262,7 +326,7 @@ private:
             const Number& cn = values[camera_];
             if (!cn.integral || !(std::abs(cn.value) < 1e9))
                 formatError(in_.path(), lineOffset_, format("line %d: camera value %g is not 0 or 1: \"%s\"", lineNumber_,
-                                                            cn.value, line_.c_str()));
+                                                            cn.value, lineText().c_str()));
             const int c = (int)cn.value;
             const int other = opt_.textLeftCameraValue == 0 ? 1 : 0;
             if (c == opt_.textLeftCameraValue)
@@ -280,7 +344,9 @@ private:
     ReaderOptions opt_;
     Number columns16_[16];
     Size size_;
-    std::string line_;
+    std::string line_;                            // header lines, and lines that cross a buffer refill
+    const char* begin_ = nullptr, *end_ = nullptr;  // the line being parsed
+    std::string lineText() const { return std::string(begin_, end_); }  // for messages
     int64 lineOffset_ = 0;
     int lineNumber_ = 0;
     int columns_ = 0;

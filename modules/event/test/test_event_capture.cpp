@@ -4,6 +4,9 @@
 
 #include "test_precomp.hpp"
 
+#include <iomanip>
+#include <sstream>
+
 namespace opencv_test { namespace {
 
 // Asserts that a cv::Exception is raised whose message contains every fragment.
@@ -70,6 +73,65 @@ TEST(Event_Capture_Text, seconds_convert_to_microseconds_exactly)
     EXPECT_EQ(1000001, ev[2].t);      // 1000000.5 us: half away from zero
     EXPECT_EQ(86400000001LL, ev[3].t);
     std::remove(path.c_str());
+}
+
+// The reader parses digits eight at a time from its buffer; every length of integer and of fraction, lines
+// that cross the 1 MiB buffer refills, separators of every kind and a last line without a newline must
+// give the numbers a byte-wise reading gives (computed here from the integers that were printed).
+TEST(Event_Capture_Text, numbers_of_every_length_parse_exactly)
+{
+    RNG rng(77);
+    std::ostringstream text;
+    std::vector<Event> expected;
+    int64 t = 0;
+    const char* separators[] = { " ", "\t", ",", " , ", ";" };
+    for (int i = 0; i < 120000; i++)
+    {
+        // Timestamps with 1 to 17 digits (a jump to the next length now and then), coordinates 1 to 5 digits.
+        const int digits = 1 + (i / 7000) % 17;
+        int64 low = 1;
+        for (int k = 1; k < digits; k++)
+            low *= 10;
+        t = std::max(t + rng.uniform(0, 3), digits == 1 ? 0 : low);
+        const int x = rng.uniform(0, 32767), y = rng.uniform(0, 32767), p = rng.uniform(0, 2);
+        const char* sep = separators[rng.uniform(0, 5)];
+        text << t << sep << x << sep << y << sep << p << (i + 1 < 120000 ? "\n" : "");  // the last without newline
+        expected.push_back(Event(t, x, y, p));
+    }
+    const std::string path = writeTempFile("32767 32767\n" + text.str(), ".txt");
+    EventCapture cap;
+    cap.set(EVENT_CAP_PROP_TEXT_TIME_UNIT, EVENT_TIME_UNIT_MICROSECONDS);
+    ASSERT_TRUE(cap.open(path));
+    const std::vector<Event> ev = readAllEvents(cap, 4099);
+    ASSERT_EQ(expected.size(), ev.size());
+    for (size_t i = 0; i < ev.size(); i++)
+        ASSERT_EQ(expected[i], ev[i]) << "line " << i + 2;
+    std::remove(path.c_str());
+
+    // Seconds with 1 to 12 fraction digits: microseconds by exact decimal rounding, half away from zero.
+    std::ostringstream secs;
+    std::vector<int64> micros;
+    for (int i = 0; i < 20000; i++)
+    {
+        const int fd = 1 + i % 12;
+        const int64 whole = 1000 + i;
+        int64 frac = 0, scale = 1;
+        for (int k = 0; k < fd; k++)
+        {
+            frac = frac * 10 + rng.uniform(0, 10);
+            scale *= 10;
+        }
+        secs << whole << "." << std::setw(fd) << std::setfill('0') << frac << " 1 1 1\n";
+        // whole s + frac / scale s in us: frac * 10^6 / scale, rounded half up (all positive).
+        micros.push_back(whole * 1000000 + (int64)((frac * 1000000 * 2 + scale) / (2 * scale)));
+    }
+    const std::string spath = writeTempFile(secs.str(), ".txt");
+    EventCapture scap(spath);
+    const std::vector<Event> sev = readAllEvents(scap);
+    ASSERT_EQ(micros.size(), sev.size());
+    for (size_t i = 0; i < sev.size(); i++)
+        ASSERT_EQ(micros[i], sev[i].t) << "line " << i + 1;
+    std::remove(spath.c_str());
 }
 
 TEST(Event_Capture_Text, stereo_camera_column_one_based_and_batches)
