@@ -65,11 +65,9 @@ __attribute__((target("avx2"))) static unsigned rectSadAvx2(const uchar* a, cons
     return (unsigned)(_mm_cvtsi128_si32(s) + _mm_cvtsi128_si32(_mm_unpackhi_epi64(s, s)));
 }
 
-typedef unsigned (*RectSadFn)(const uchar*, const uchar*, size_t, size_t, int, int);
-
 struct Kernel
 {
-    RectSadFn fn;
+    DescriptorRectSadFn fn;
     const char* name;
 };
 
@@ -87,12 +85,23 @@ unsigned descriptorRectSad(const uchar* a, const uchar* b, size_t aStep, size_t 
     return kernel().fn(a, b, aStep, bStep, width, height);
 }
 
+DescriptorRectSadFn descriptorRectSadFunction()
+{
+    return kernel().fn;
+}
+
 const char* descriptorRectSadKernel()
 {
     return kernel().name;
 }
 
 #else
+
+DescriptorRectSadFn descriptorRectSadFunction()
+{
+    return descriptorRectSadScalar;
+}
+
 
 unsigned descriptorRectSad(const uchar* a, const uchar* b, size_t aStep, size_t bStep, int width, int height)
 {

@@ -23,6 +23,11 @@ CV_EXPORTS unsigned descriptorRectSad(const uchar* a, const uchar* b, size_t aSt
 (Exported for opencv_test_event only; not part of the public API.) */
 CV_EXPORTS unsigned descriptorRectSadScalar(const uchar* a, const uchar* b, size_t aStep, size_t bStep, int width, int height);
 
+/** The function descriptorRectSad calls on this CPU, for callers in a hot loop that fetch it once (each
+descriptorRectSad call checks which version to use). */
+typedef unsigned (*DescriptorRectSadFn)(const uchar* a, const uchar* b, size_t aStep, size_t bStep, int width, int height);
+CV_EXPORTS DescriptorRectSadFn descriptorRectSadFunction();
+
 /** Name of the version descriptorRectSad uses on this CPU ("avx2", "sse2" or "scalar"), for benchmarks. */
 CV_EXPORTS const char* descriptorRectSadKernel();
 

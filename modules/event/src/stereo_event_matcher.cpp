@@ -469,19 +469,19 @@ private:
             if (!candidate_[k])
                 continue;
             const int d = minDisparity_ + (int)k;
-            cost_[k] += descriptorRectSad(self.descriptor(r.x + x0, r.y + y0), other.descriptor(r.x + x0 + sign * d, r.y + y0),
+            cost_[k] += rectSad_(self.descriptor(r.x + x0, r.y + y0), other.descriptor(r.x + x0 + sign * d, r.y + y0),
                                           self.descriptorRowStep(), other.descriptorRowStep(), x1 - x0 + 1, y1 - y0 + 1);
         }
         return mass;
     }
 
     // Sum of the descriptor values over [x0, x1] x [y0, y1] relative to q: the cost of matching against nothing.
-    static unsigned rectMass(const ZouDescriptorMap& map, Point q, int x0, int x1, int y0, int y1)
+    unsigned rectMass(const ZouDescriptorMap& map, Point q, int x0, int x1, int y0, int y1) const
     {
         // Against one row of zero descriptors, used for every row (step 0); windows are at most 31 wide.
         static const uchar zeros[32 * ZouDescriptorMap::DESCRIPTOR_BYTES] = { 0 };
         CV_DbgAssert(x1 - x0 < 32);
-        return descriptorRectSad(map.descriptor(q.x + x0, q.y + y0), zeros, map.descriptorRowStep(), 0, x1 - x0 + 1,
+        return rectSad_(map.descriptor(q.x + x0, q.y + y0), zeros, map.descriptorRowStep(), 0, x1 - x0 + 1,
                                  y1 - y0 + 1);
     }
 
@@ -679,6 +679,7 @@ private:
     FrameSgbmMatcher frames_;
     RenderState render_[2];
     int64 lastTime_ = std::numeric_limits<int64>::min();
+    DescriptorRectSadFn rectSad_ = descriptorRectSadFunction();  // the cost kernel for this CPU, fetched once
     std::vector<uchar> candidate_;
     std::vector<unsigned> cost_;
     struct Neighbour
