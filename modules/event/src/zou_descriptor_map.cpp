@@ -86,6 +86,32 @@ void ZouDescriptorMap::vote(int x, int y, int p, int code, int delta)
             row[(size_t)xx * DESCRIPTOR_BYTES + bin] = (uchar)(row[(size_t)xx * DESCRIPTOR_BYTES + bin] + d);
 }
 
+void ZouDescriptorMap::revote(int x, int y, int p, int oldCode, int newCode)
+{
+    if (oldCode == NONE || newCode == NONE || oldCode == 0 || newCode == 0)
+    {
+        if (oldCode != NONE)
+            vote(x, y, p, oldCode, -1);
+        if (newCode != NONE)
+            vote(x, y, p, newCode, +1);
+        return;
+    }
+    // Both are single-bin vectors: move the vote in one pass over the window.
+    const int h = window_ / 2;
+    const int x0 = std::max(0, x - h), x1 = std::min(size_.width - 1, x + h);
+    const int y0 = std::max(0, y - h), y1 = std::min(size_.height - 1, y + h);
+    const size_t rowStep = descriptorRowStep();
+    uchar* row = &descriptors_[((size_t)(y0 + margin_) * stride_ + (size_t)(x0 + margin_)) * DESCRIPTOR_BYTES] + p * BINS;
+    const int from = bins_[(size_t)oldCode], to = bins_[(size_t)newCode];
+    for (int yy = y0; yy <= y1; yy++, row += rowStep)
+        for (int xx = 0; xx <= x1 - x0; xx++)
+        {
+            uchar* bins = row + (size_t)xx * DESCRIPTOR_BYTES;
+            bins[from]--;
+            bins[to]++;
+        }
+}
+
 int ZouDescriptorMap::scanNearest(int x, int y, int p, int from) const
 {
     for (int k = from; k < (int)offsets_.size(); k++)
@@ -115,10 +141,8 @@ void ZouDescriptorMap::activate(int x, int y, int p, int64 expiry, float lifetim
         uchar& cur = nearest_[id(sx, sy, p)];
         if (cur != NONE && cur <= k)
             continue;
-        if (cur != NONE)
-            vote(sx, sy, p, cur, -1);
+        revote(sx, sy, p, cur, k);
         cur = (uchar)k;
-        vote(sx, sy, p, k, +1);
     }
 }
 
@@ -144,11 +168,9 @@ void ZouDescriptorMap::deactivateId(int i)
         uchar& cur = nearest_[id(sx, sy, p)];
         if (cur != k)
             continue;
-        vote(sx, sy, p, k, -1);
         // Offsets before k were all inactive (else one of them would be the nearest): search after k.
         cur = (uchar)scanNearest(sx, sy, p, k + 1);
-        if (cur != NONE)
-            vote(sx, sy, p, cur, +1);
+        revote(sx, sy, p, k, cur);
     }
 }
 

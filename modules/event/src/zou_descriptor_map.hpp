@@ -62,6 +62,8 @@ private:
     void deactivateId(int id);
     int scanNearest(int x, int y, int p, int from) const;
     void vote(int x, int y, int p, int code, int delta);
+    // Moves the vote of (x, y)'s vector from oldCode to newCode (either may be NONE) in the window's descriptors.
+    void revote(int x, int y, int p, int oldCode, int newCode);
 
     Size size_;
     int window_ = 5, maxVectorLength_ = 3, margin_ = 0, stride_ = 0;
