@@ -7,6 +7,8 @@
 // seconds, Mev/s, and the peak resident memory while reading (VmHWM after resetting it through
 // /proc/self/clear_refs), which must not grow with N: the readers stream.
 
+#include "resident_memory.hpp"
+
 #include <opencv2/event.hpp>
 
 #include <chrono>
@@ -21,22 +23,6 @@ using namespace cv::event;
 
 namespace {
 
-double peakRssMiB()
-{
-    std::ifstream status("/proc/self/status");
-    std::string line;
-    while (std::getline(status, line))
-        if (line.compare(0, 6, "VmHWM:") == 0)
-            return std::stod(line.substr(6)) / 1024.0;
-    return -1;
-}
-
-void resetPeakRss()
-{
-    std::ofstream clear("/proc/self/clear_refs");
-    clear << "5";
-}
-
 struct Row
 {
     std::string what, format;
@@ -48,7 +34,7 @@ Row readAll(const std::string& path, const std::string& label)
 {
     Row r;
     r.what = label;
-    resetPeakRss();
+    bench::resetPeakResident();
     const auto t0 = std::chrono::steady_clock::now();
     EventCapture cap;
     cap.set(EVENT_CAP_PROP_BATCH_EVENTS, 65536);
@@ -58,7 +44,7 @@ Row readAll(const std::string& path, const std::string& label)
     while (cap.read(packet))
         r.events += (int64)packet.size();
     r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    r.rssMiB = peakRssMiB();
+    r.rssMiB = bench::residentMiB("VmHWM:");
     return r;
 }
 

@@ -14,6 +14,8 @@
 // --soak-events N streams N events through one COUPLED matcher (the first scene replayed with its time
 // shifted on every pass) and prints the resident memory at every tenth: it stays flat.
 
+#include "resident_memory.hpp"
+
 #include <opencv2/event.hpp>
 
 #include <algorithm>
@@ -48,22 +50,6 @@ struct Result
 };
 
 std::string num(double v, int precision);
-
-double residentMiB(const char* field)
-{
-    std::ifstream status("/proc/self/status");
-    std::string line;
-    const size_t n = std::strlen(field);
-    while (std::getline(status, line))
-        if (line.compare(0, n, field) == 0)
-            return std::stod(line.substr(n)) / 1024.0;
-    return -1;
-}
-
-void resetPeakResident()
-{
-    std::ofstream("/proc/self/clear_refs") << "5";  // VmHWM := VmRSS
-}
 
 double percentile(std::vector<float>& v, double q)
 {
@@ -121,8 +107,8 @@ Result run(const Recording& rec, int mode)
     std::vector<float> latency;
     latency.reserve((size_t)rec.events);  // before the memory baseline: the matcher's memory is what is measured
     std::fill(latency.data(), latency.data() + latency.capacity(), 0.f);
-    resetPeakResident();
-    const double before = residentMiB("VmRSS:");
+    bench::resetPeakResident();
+    const double before = bench::residentMiB("VmRSS:");
     Ptr<StereoEventMatcher> m = StereoEventMatcher::create(rec.size, mode);
     StereoEventEstimate est;
     for (size_t w = 0; w < rec.windows.size(); w++)
@@ -173,7 +159,7 @@ Result run(const Recording& rec, int mode)
     r.p50 = percentile(latency, 0.5);
     r.p99 = percentile(latency, 0.99);
     latency = std::vector<float>();
-    r.addedMiB = residentMiB("VmHWM:") - before;
+    r.addedMiB = bench::residentMiB("VmHWM:") - before;
     return r;
 }
 
@@ -195,7 +181,7 @@ void soak(const Recording& rec, int64 events)
             if (done >= nextReport)
             {
                 const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-                std::cout << "| " << done << " | " << num(residentMiB("VmRSS:"), 1) << " | "
+                std::cout << "| " << done << " | " << num(bench::residentMiB("VmRSS:"), 1) << " | "
                           << num(s > 0 ? (double)done / s / 1e6 : 0, 3) << " |" << std::endl;
                 nextReport += events / 10;
             }
@@ -209,7 +195,7 @@ void soak(const Recording& rec, int64 events)
         }
         shift += span;
     }
-    std::cout << "| " << done << " | " << num(residentMiB("VmRSS:"), 1) << " | - |\n";
+    std::cout << "| " << done << " | " << num(bench::residentMiB("VmRSS:"), 1) << " | - |\n";
 }
 
 std::string pct(int64 a, int64 b)
@@ -301,7 +287,7 @@ int main(int argc, char** argv)
         table << "\nCOUPLED / DECOUPLED time over all recordings: " << num(coupledSeconds / std::max(1e-12, decoupledSeconds), 2)
               << " (the paper reports about 0.5)\n\n" << speed.str()
               << "\nPeak resident memory of the whole run (the recordings are held in memory): "
-              << num(residentMiB("VmHWM:"), 1) << " MiB\n";
+              << num(bench::residentMiB("VmHWM:"), 1) << " MiB\n";
         std::cout << table.str();
         if (!markdown.empty())
             std::ofstream(markdown) << table.str();
