@@ -61,18 +61,28 @@ void ZouDescriptorMap::reset()
     expiry_.reset((int)ids);
 }
 
-void ZouDescriptorMap::vote(int x, int y, int p, int code, int delta)
+inline ZouDescriptorMap::VoteWindow ZouDescriptorMap::voteWindow(int x, int y, int p)
 {
     const int h = window_ / 2;
     const int x0 = std::max(0, x - h), x1 = std::min(size_.width - 1, x + h);
     const int y0 = std::max(0, y - h), y1 = std::min(size_.height - 1, y + h);
+    VoteWindow w;
+    w.first = &descriptors_[((size_t)(y0 + margin_) * stride_ + (size_t)(x0 + margin_)) * DESCRIPTOR_BYTES] + p * BINS;
+    w.width = x1 - x0 + 1;
+    w.height = y1 - y0 + 1;
+    return w;
+}
+
+void ZouDescriptorMap::vote(int x, int y, int p, int code, int delta)
+{
+    const VoteWindow w = voteWindow(x, y, p);
     const size_t rowStep = descriptorRowStep();
-    uchar* row = &descriptors_[((size_t)(y0 + margin_) * stride_ + (size_t)(x0 + margin_)) * DESCRIPTOR_BYTES] + p * BINS;
+    uchar* row = w.first;
     const uchar d = (uchar)delta;  // +1 or 255 (-1 modulo 256): counts never go below zero
     if (code == 0)
     {
-        for (int yy = y0; yy <= y1; yy++, row += rowStep)
-            for (int xx = 0; xx <= x1 - x0; xx++)
+        for (int yy = 0; yy < w.height; yy++, row += rowStep)
+            for (int xx = 0; xx < w.width; xx++)
             {
                 uchar* bins = row + (size_t)xx * DESCRIPTOR_BYTES;
                 for (int b = 0; b < BINS; b++)
@@ -81,8 +91,8 @@ void ZouDescriptorMap::vote(int x, int y, int p, int code, int delta)
         return;
     }
     const int bin = bins_[(size_t)code];
-    for (int yy = y0; yy <= y1; yy++, row += rowStep)
-        for (int xx = 0; xx <= x1 - x0; xx++)
+    for (int yy = 0; yy < w.height; yy++, row += rowStep)
+        for (int xx = 0; xx < w.width; xx++)
             row[(size_t)xx * DESCRIPTOR_BYTES + bin] = (uchar)(row[(size_t)xx * DESCRIPTOR_BYTES + bin] + d);
 }
 
@@ -97,14 +107,12 @@ void ZouDescriptorMap::revote(int x, int y, int p, int oldCode, int newCode)
         return;
     }
     // Both are single-bin vectors: move the vote in one pass over the window.
-    const int h = window_ / 2;
-    const int x0 = std::max(0, x - h), x1 = std::min(size_.width - 1, x + h);
-    const int y0 = std::max(0, y - h), y1 = std::min(size_.height - 1, y + h);
+    const VoteWindow w = voteWindow(x, y, p);
     const size_t rowStep = descriptorRowStep();
-    uchar* row = &descriptors_[((size_t)(y0 + margin_) * stride_ + (size_t)(x0 + margin_)) * DESCRIPTOR_BYTES] + p * BINS;
+    uchar* row = w.first;
     const int from = bins_[(size_t)oldCode], to = bins_[(size_t)newCode];
-    for (int yy = y0; yy <= y1; yy++, row += rowStep)
-        for (int xx = 0; xx <= x1 - x0; xx++)
+    for (int yy = 0; yy < w.height; yy++, row += rowStep)
+        for (int xx = 0; xx < w.width; xx++)
         {
             uchar* bins = row + (size_t)xx * DESCRIPTOR_BYTES;
             bins[from]--;

@@ -61,6 +61,14 @@ private:
     int id(int x, int y, int p) const { return (p * size_.height + y) * size_.width + x; }
     void deactivateId(int id);
     int scanNearest(int x, int y, int p, int from) const;
+    // The descriptors of polarity p's bins that (x, y)'s vector votes into: the N x N window around it,
+    // clipped to the image (first bin of the top-left one, and the window's size).
+    struct VoteWindow
+    {
+        uchar* first;
+        int width, height;
+    };
+    VoteWindow voteWindow(int x, int y, int p);
     void vote(int x, int y, int p, int code, int delta);
     // Moves the vote of (x, y)'s vector from oldCode to newCode (either may be NONE) in the window's descriptors.
     void revote(int x, int y, int p, int oldCode, int newCode);
