@@ -80,11 +80,6 @@ static const Kernel& kernel()
     return k;
 }
 
-unsigned descriptorRectSad(const uchar* a, const uchar* b, size_t aStep, size_t bStep, int width, int height)
-{
-    return kernel().fn(a, b, aStep, bStep, width, height);
-}
-
 DescriptorRectSadFn descriptorRectSadFunction()
 {
     return kernel().fn;
@@ -100,12 +95,6 @@ const char* descriptorRectSadKernel()
 DescriptorRectSadFn descriptorRectSadFunction()
 {
     return descriptorRectSadScalar;
-}
-
-
-unsigned descriptorRectSad(const uchar* a, const uchar* b, size_t aStep, size_t bStep, int width, int height)
-{
-    return descriptorRectSadScalar(a, b, aStep, bStep, width, height);
 }
 
 const char* descriptorRectSadKernel()

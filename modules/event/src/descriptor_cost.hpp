@@ -12,23 +12,19 @@ namespace event {
 
 /** Sum of absolute differences between two rectangles of 32-byte descriptors (ZouDescriptorMap layout:
 24 counts, then 8 zero bytes), @p width x @p height descriptors; rows are @p aStep / @p bStep bytes apart
-(a step of 0 reuses one row, e.g. a row of zeros).
-
-This is the matcher's inner loop. The AVX2 version (chosen at run time when the CPU has it) adds one
-32-byte SAD per descriptor into 64-bit lanes and reduces once per call; the SSE2 one does the same with two
-16-byte halves; elsewhere a scalar loop. All give the same integers. */
-CV_EXPORTS unsigned descriptorRectSad(const uchar* a, const uchar* b, size_t aStep, size_t bStep, int width, int height);
-
-/** The scalar version of descriptorRectSad: the reference the tests compare the SIMD ones with.
-(Exported for opencv_test_event only; not part of the public API.) */
-CV_EXPORTS unsigned descriptorRectSadScalar(const uchar* a, const uchar* b, size_t aStep, size_t bStep, int width, int height);
-
-/** The function descriptorRectSad calls on this CPU, for callers in a hot loop that fetch it once (each
-descriptorRectSad call checks which version to use). */
+(a step of 0 reuses one row, e.g. a row of zeros). */
 typedef unsigned (*DescriptorRectSadFn)(const uchar* a, const uchar* b, size_t aStep, size_t bStep, int width, int height);
+
+/** The DescriptorRectSadFn for this CPU, chosen on the first call; the matcher's inner loop, so callers fetch
+it once. The AVX2 version (when the CPU has it) adds one 32-byte SAD per descriptor into 64-bit lanes and
+reduces once per call; the SSE2 one does the same with two 16-byte halves; elsewhere the scalar loop. All
+give the same integers. (Exported for opencv_test_event and opencv_perf_event; not public API.) */
 CV_EXPORTS DescriptorRectSadFn descriptorRectSadFunction();
 
-/** Name of the version descriptorRectSad uses on this CPU ("avx2", "sse2" or "scalar"), for benchmarks. */
+/** The scalar version: the reference the tests compare the SIMD ones with. */
+CV_EXPORTS unsigned descriptorRectSadScalar(const uchar* a, const uchar* b, size_t aStep, size_t bStep, int width, int height);
+
+/** Name of the version descriptorRectSadFunction() returns ("avx2", "sse2" or "scalar"), for messages. */
 CV_EXPORTS const char* descriptorRectSadKernel();
 
 }  // namespace event

@@ -470,7 +470,7 @@ private:
                 continue;
             const int d = minDisparity_ + (int)k;
             cost_[k] += rectSad_(self.descriptor(r.x + x0, r.y + y0), other.descriptor(r.x + x0 + sign * d, r.y + y0),
-                                          self.descriptorRowStep(), other.descriptorRowStep(), x1 - x0 + 1, y1 - y0 + 1);
+                                 self.descriptorRowStep(), other.descriptorRowStep(), x1 - x0 + 1, y1 - y0 + 1);
         }
         return mass;
     }
@@ -481,8 +481,7 @@ private:
         // Against one row of zero descriptors, used for every row (step 0); windows are at most 31 wide.
         static const uchar zeros[32 * ZouDescriptorMap::DESCRIPTOR_BYTES] = { 0 };
         CV_DbgAssert(x1 - x0 < 32);
-        return rectSad_(map.descriptor(q.x + x0, q.y + y0), zeros, map.descriptorRowStep(), 0, x1 - x0 + 1,
-                                 y1 - y0 + 1);
+        return rectSad_(map.descriptor(q.x + x0, q.y + y0), zeros, map.descriptorRowStep(), 0, x1 - x0 + 1, y1 - y0 + 1);
     }
 
     MatchResult match(int c, Point r, int p)

@@ -24,6 +24,7 @@ TEST(Event_DescriptorCost, simd_kernel_equals_scalar_reference)
         b[i] = used ? (uchar)(rng.uniform(0, 4) == 0 ? rng.uniform(0, 256) : 0) : 0;
     }
     const size_t step = (size_t)stride * bytes;
+    const DescriptorRectSadFn simd = descriptorRectSadFunction();
     int checked = 0;
     for (int w = 1; w <= 31; w += 1)
         for (int h = 1; h <= 31; h += 3)
@@ -31,9 +32,9 @@ TEST(Event_DescriptorCost, simd_kernel_equals_scalar_reference)
             {
                 const uchar* pa = &a[(size_t)offset * bytes];
                 const uchar* pb = &b[(size_t)(offset + 2) * bytes + step];
-                ASSERT_EQ(descriptorRectSadScalar(pa, pb, step, step, w, h), descriptorRectSad(pa, pb, step, step, w, h))
+                ASSERT_EQ(descriptorRectSadScalar(pa, pb, step, step, w, h), simd(pa, pb, step, step, w, h))
                     << w << " x " << h << " at " << offset << " (" << descriptorRectSadKernel() << ")";
-                ASSERT_EQ(descriptorRectSadScalar(pa, pb, step, 0, w, h), descriptorRectSad(pa, pb, step, 0, w, h))
+                ASSERT_EQ(descriptorRectSadScalar(pa, pb, step, 0, w, h), simd(pa, pb, step, 0, w, h))
                     << w << " x " << h << " against one row";
                 checked++;
             }
@@ -42,7 +43,7 @@ TEST(Event_DescriptorCost, simd_kernel_equals_scalar_reference)
     std::vector<uchar> full((size_t)31 * bytes, 0), zeros(full.size(), 0);
     for (size_t i = 0; i < full.size(); i++)
         full[i] = (i % bytes) < 24 ? 255 : 0;
-    EXPECT_EQ(descriptorRectSad(full.data(), zeros.data(), 0, 0, 31, 31), 31u * 31u * 24u * 255u);
+    EXPECT_EQ(simd(full.data(), zeros.data(), 0, 0, 31, 31), 31u * 31u * 24u * 255u);
 }
 
 }}  // namespace
