@@ -4,8 +4,9 @@
 
 // The whole stereo pipeline (rectification, lifetimes, descriptors, matching) per mode, by sensor size and
 // event rate: one 10 ms window of the simulated two_planes scene after a 20 ms warm-up (not timed), with
-// 0 or 5 Hz of background activity per pixel on top (DAVIS240: +0.43 Mev/s; VGA: +3.1 Mev/s). The events per window are recorded as the
-// property "events" (in the XML / JSON output) so that time per event and Mev/s follow from the table.
+// 0 or 5 Hz of background activity per pixel on top (DAVIS240: +0.43 Mev/s; VGA: +3.1 Mev/s). The events
+// per window are recorded as the property "events" (in the XML / JSON output) so that time per event and
+// Mev/s follow from the table.
 
 #include "perf_precomp.hpp"
 
