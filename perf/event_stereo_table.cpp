@@ -105,8 +105,9 @@ Result run(const Recording& rec, int mode)
     Result r;
     Mat d, lt, fl;
     std::vector<float> latency;
-    latency.reserve((size_t)rec.events);  // before the memory baseline: the matcher's memory is what is measured
-    std::fill(latency.data(), latency.data() + latency.capacity(), 0.f);
+    // Allocated and touched before the memory baseline, so that the matcher's memory is what is measured.
+    latency.assign((size_t)rec.events, 0.f);
+    latency.clear();  // keeps the capacity
     bench::resetPeakResident();
     const double before = bench::residentMiB("VmRSS:");
     Ptr<StereoEventMatcher> m = StereoEventMatcher::create(rec.size, mode);
