@@ -96,10 +96,15 @@ public:
                 if (isComment(begin_, end_))
                     continue;
             }
-            const Event e = parse();
-            if (opt_.cameraFilter >= 0 && e.camera != opt_.cameraFilter)
+            // Parsed straight into the output: an Event built on the stack in narrow stores and copied with one
+            // wide load stalled on store forwarding (a fifth of the reader's time).
+            out.emplace_back();
+            parse(out.back());
+            if (opt_.cameraFilter >= 0 && out.back().camera != opt_.cameraFilter)
+            {
+                out.pop_back();
                 continue;
-            out.push_back(e);
+            }
             produced++;
         }
         return produced > 0;
@@ -284,7 +289,63 @@ private:
         return (int64)std::llround(n.value * timeScale_);
     }
 
-    Event parse()
+    // The common layout, every column a plain unsigned integer and the time in microseconds, read straight
+    // into integers (no Number, no double). Anything else on the line (a sign, a fraction, an exponent, more
+    // than 18 digits, a coordinate below the base, a malformed column) returns false, and parseGeneral() reads
+    // the line again and decides, with its error messages: the two agree on every line this path accepts.
+    bool parseIntegers(Event& e) const
+    {
+        int64 v[16];
+        const int want = std::min(columns_, 16);
+        const char* p = begin_;
+        for (int n = 0; n < want; n++)
+        {
+            while (p < end_ && isSeparator(*p))
+                p++;
+            int64 acc = 0;
+            int digits = wordDigits(p, end_, acc);  // most columns: one word
+            const char* stop = p + digits;
+            if (digits == 8 || digits < 0)
+            {
+                acc = 0;
+                digits = 0;
+                stop = scanDigits(p, end_, acc, digits, 18);
+            }
+            if (digits == 0 || (stop < end_ && !isSeparator(*stop)))
+                return false;
+            v[n] = acc;
+            p = stop;
+        }
+        const int base = opt_.textOneBased ? 1 : 0;
+        const int64 x = v[opt_.textColumnX] - base, y = v[opt_.textColumnY] - base;
+        if (x < 0 || y < 0 || x >= 32768 || y >= 32768)
+            return false;
+        int camera = CAMERA_LEFT;
+        if (camera_ >= 0)
+        {
+            const int64 c = v[camera_];
+            if (c == opt_.textLeftCameraValue)
+                camera = CAMERA_LEFT;
+            else if (c == 1 - opt_.textLeftCameraValue)
+                camera = CAMERA_RIGHT;
+            else
+                return false;
+        }
+        e.t = v[opt_.textColumnT];
+        e.x = (short)x;
+        e.y = (short)y;
+        e.p = v[opt_.textColumnP] > 0 ? POLARITY_ON : POLARITY_OFF;
+        e.camera = (uchar)camera;
+        return true;
+    }
+
+    void parse(Event& e)
+    {
+        if (!integerTime_ || !parseIntegers(e))
+            e = parseGeneral();
+    }
+
+    Event parseGeneral()
     {
         // Parse the columns in place: no allocation per line (and the columns are a member: constructing 16 of
         // them per line took 40 % of the reader's time).

@@ -134,6 +134,37 @@ TEST(Event_Capture_Text, numbers_of_every_length_parse_exactly)
     std::remove(spath.c_str());
 }
 
+TEST(Event_Capture_Text, plain_integer_lines_and_signed_lines_read_alike)
+{
+    // Lines of plain unsigned integers take the reader's integer path; a sign anywhere sends a line through the
+    // general parser. Mixed at random in one stereo, one-based file, both must give the events written.
+    RNG rng(78);
+    std::ostringstream text;
+    std::vector<Event> expected;
+    int64 t = 5;
+    for (int i = 0; i < 20000; i++)
+    {
+        t += rng.uniform(1, 1000);  // strictly increasing: the stereo merge puts the left one first on a tie
+        const int x = rng.uniform(0, 346), y = rng.uniform(0, 260), p = rng.uniform(0, 2), c = rng.uniform(0, 2);
+        const int retina = c == CAMERA_LEFT ? 1 : 0;  // TUM: retina 1 is the left camera
+        if (rng.uniform(0, 2))
+            text << t << ' ' << x + 1 << ' ' << y + 1 << ' ' << p << ' ' << retina << '\n';
+        else
+            text << '+' << t << ' ' << '+' << x + 1 << ' ' << y + 1 << ' ' << (p ? "+1" : "-1") << ' ' << retina << '\n';
+        expected.push_back(Event(t, x, y, p, c));
+    }
+    const std::string path = writeTempFile(text.str(), ".dat");
+    EventCapture cap;
+    std::vector<int> params = { EVENT_CAP_PROP_TEXT_ONE_BASED, 1, EVENT_CAP_PROP_TEXT_LEFT_CAMERA_VALUE, 1,
+                                EVENT_CAP_PROP_SENSOR_WIDTH, 346, EVENT_CAP_PROP_SENSOR_HEIGHT, 260 };
+    ASSERT_TRUE(cap.open(path, EVENT_CAP_TEXT, params));
+    const std::vector<Event> ev = readAllEvents(cap, 777);
+    ASSERT_EQ(expected.size(), ev.size());
+    for (size_t i = 0; i < ev.size(); i++)
+        ASSERT_EQ(expected[i], ev[i]) << "line " << i + 1;
+    std::remove(path.c_str());
+}
+
 TEST(Event_Capture_Text, stereo_camera_column_one_based_and_batches)
 {
     // TUM layout: t_us x y p retina, retina 1 = left; 1-based coordinates as an option.
