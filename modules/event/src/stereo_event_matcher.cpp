@@ -463,6 +463,8 @@ private:
     unsigned addRect(const ZouDescriptorMap& self, const ZouDescriptorMap& other, Point r, int sign, int x0, int x1,
                      int y0, int y1)
     {
+        if (!clipToImage(r, x0, x1, y0, y1))
+            return 0;
         const unsigned mass = rectMass(self, r, x0, x1, y0, y1);
         for (size_t k = 0; k < candidate_.size(); k++)
         {
@@ -473,6 +475,19 @@ private:
                                  self.descriptorRowStep(), other.descriptorRowStep(), x1 - x0 + 1, y1 - y0 + 1);
         }
         return mass;
+    }
+
+    // Clips the rectangle [x0, x1] x [y0, y1] relative to the event's pixel r to the image; false when nothing is
+    // left. Cost windows cover only the event's own image: past its border both sensors' descriptors are zero for
+    // a candidate that also runs past the other border (d near 0 at the right border of the left image), which
+    // would match "nothing" against "nothing" for free and pull border events toward that candidate.
+    bool clipToImage(Point r, int& x0, int& x1, int& y0, int& y1) const
+    {
+        x0 = std::max(x0, -r.x);
+        x1 = std::min(x1, size_.width - 1 - r.x);
+        y0 = std::max(y0, -r.y);
+        y1 = std::min(y1, size_.height - 1 - r.y);
+        return x0 <= x1 && y0 <= y1;
     }
 
     // Sum of the descriptor values over [x0, x1] x [y0, y1] relative to q: the cost of matching against nothing.
@@ -523,7 +538,9 @@ private:
                 // No better than matching against nothing from this side; the other side may simply hold more
                 // (a more sensitive sensor): compare with its mass too.
                 const int xo = r.x + sign * (minDisparity_ + best);
-                unique = cost_[best] < rectMass(other, Point(xo, r.y), -h, h, -h, h);
+                int x0 = -h, x1 = h, y0 = -h, y1 = h;
+                clipToImage(r, x0, x1, y0, y1);  // the same columns as the costs, never empty (r is inside)
+                unique = cost_[best] < rectMass(other, Point(xo, r.y), x0, x1, y0, y1);
             }
             if (unique)
             {
