@@ -65,7 +65,8 @@ activate and expire.
 
 **Cost and decision.** For each disparity d in [min, max] whose candidate pixel has active structure of the
 event's polarity, the cost is the sum over a W x W window of the SADs between the event's descriptors and
-the candidate's. Aggregation is iterative: while the winner is not unique, the window grows by a ring of
+the candidate's; near the border the window is clipped to the event's own image (past it both sensors are
+empty, which would favour candidates that also run past the other border). Aggregation is iterative: while the winner is not unique, the window grows by a ring of
 one pixel, up to A x A. The winner (with sub-pixel parabola refinement) is accepted when its cost is below
 (100 - uniquenessRatio) % of every candidate further than one pixel away; otherwise the event is flagged
 ambiguous and gets no disparity rather than a wrong one.
