@@ -24,6 +24,13 @@ unsigned descriptorRectSadScalar(const uchar* a, const uchar* b, size_t aStep, s
     return sum;
 }
 
+void descriptorRectSadBatchScalar(const uchar* a, const uchar* b, size_t aStep, size_t bStep, const ptrdiff_t* offsets,
+                                  int n, int width, int height, unsigned* sums)
+{
+    for (int i = 0; i < n; i++)
+        sums[i] += descriptorRectSadScalar(a, b + offsets[i], aStep, bStep, width, height);
+}
+
 #ifdef OPENCV_EVENT_X86_KERNELS
 
 static unsigned rectSadSse2(const uchar* a, const uchar* b, size_t aStep, size_t bStep, int width, int height)
@@ -65,9 +72,66 @@ __attribute__((target("avx2"))) static unsigned rectSadAvx2(const uchar* a, cons
     return (unsigned)(_mm_cvtsi128_si32(s) + _mm_cvtsi128_si32(_mm_unpackhi_epi64(s, s)));
 }
 
+static void rectSadBatchSse2(const uchar* a, const uchar* b, size_t aStep, size_t bStep, const ptrdiff_t* offsets, int n,
+                             int width, int height, unsigned* sums)
+{
+    for (int i = 0; i < n; i++)
+        sums[i] += rectSadSse2(a, b + offsets[i], aStep, bStep, width, height);
+}
+
+// K candidates in one pass over the rectangle: each descriptor of a is loaded once and compared with the K
+// candidates' descriptors, one accumulator (4 x 64-bit lanes) per candidate.
+template <int K>
+__attribute__((target("avx2"))) static inline void rectSadBlockAvx2(const uchar* a, const uchar* b, size_t aStep,
+                                                                   size_t bStep, const ptrdiff_t* offsets, int width,
+                                                                   int height, unsigned* sums)
+{
+    __m256i acc[K];
+    const uchar* pb[K];
+    for (int k = 0; k < K; k++)
+    {
+        acc[k] = _mm256_setzero_si256();
+        pb[k] = b + offsets[k];
+    }
+    const int bytes = width * DESCRIPTOR_BYTES;
+    for (int y = 0; y < height; y++, a += aStep)
+    {
+        for (int x = 0; x < bytes; x += DESCRIPTOR_BYTES)
+        {
+            const __m256i s = _mm256_loadu_si256((const __m256i*)(a + x));
+            for (int k = 0; k < K; k++)
+                acc[k] = _mm256_add_epi64(acc[k], _mm256_sad_epu8(s, _mm256_loadu_si256((const __m256i*)(pb[k] + x))));
+        }
+        for (int k = 0; k < K; k++)
+            pb[k] += bStep;
+    }
+    for (int k = 0; k < K; k++)
+    {
+        const __m128i s = _mm_add_epi64(_mm256_castsi256_si128(acc[k]), _mm256_extracti128_si256(acc[k], 1));
+        sums[k] += (unsigned)(_mm_cvtsi128_si32(s) + _mm_cvtsi128_si32(_mm_unpackhi_epi64(s, s)));
+    }
+}
+
+__attribute__((target("avx2"))) static void rectSadBatchAvx2(const uchar* a, const uchar* b, size_t aStep, size_t bStep,
+                                                             const ptrdiff_t* offsets, int n, int width, int height,
+                                                             unsigned* sums)
+{
+    int i = 0;
+    for (; i + 4 <= n; i += 4)
+        rectSadBlockAvx2<4>(a, b, aStep, bStep, offsets + i, width, height, sums + i);
+    if (i + 2 <= n)
+    {
+        rectSadBlockAvx2<2>(a, b, aStep, bStep, offsets + i, width, height, sums + i);
+        i += 2;
+    }
+    if (i < n)
+        rectSadBlockAvx2<1>(a, b, aStep, bStep, offsets + i, width, height, sums + i);
+}
+
 struct Kernel
 {
     DescriptorRectSadFn fn;
+    DescriptorRectSadBatchFn batch;
     const char* name;
 };
 
@@ -75,14 +139,19 @@ struct Kernel
 // with OpenCV's own detection, so that OPENCV_CPU_DISABLE=AVX2 also turns the AVX2 version off.
 static const Kernel& kernel()
 {
-    static const Kernel k = cv::checkHardwareSupport(CV_CPU_AVX2) ? Kernel{ rectSadAvx2, "avx2" }
-                                                                  : Kernel{ rectSadSse2, "sse2" };
+    static const Kernel k = cv::checkHardwareSupport(CV_CPU_AVX2) ? Kernel{ rectSadAvx2, rectSadBatchAvx2, "avx2" }
+                                                                  : Kernel{ rectSadSse2, rectSadBatchSse2, "sse2" };
     return k;
 }
 
 DescriptorRectSadFn descriptorRectSadFunction()
 {
     return kernel().fn;
+}
+
+DescriptorRectSadBatchFn descriptorRectSadBatchFunction()
+{
+    return kernel().batch;
 }
 
 const char* descriptorRectSadKernel()
@@ -95,6 +164,11 @@ const char* descriptorRectSadKernel()
 DescriptorRectSadFn descriptorRectSadFunction()
 {
     return descriptorRectSadScalar;
+}
+
+DescriptorRectSadBatchFn descriptorRectSadBatchFunction()
+{
+    return descriptorRectSadBatchScalar;
 }
 
 const char* descriptorRectSadKernel()

@@ -216,8 +216,11 @@ public:
         }
         frames_.configure(size_, minDisparity_, maxDisparity_, frameWindow_);
         lastTime_ = std::numeric_limits<int64>::min();
-        candidate_.assign((size_t)(maxDisparity_ - minDisparity_ + 1), 0);
-        cost_.assign(candidate_.size(), 0);
+        const size_t range = (size_t)(maxDisparity_ - minDisparity_ + 1);
+        position_.assign(range, -1);
+        candidates_.reserve(range);
+        offsets_.reserve(range);
+        cost_.reserve(range);
     }
 
     void setCalibration(const StereoCalibration& calibration) CV_OVERRIDE
@@ -458,22 +461,17 @@ private:
         return r < 0 ? Point(-1, -1) : Point(r % size_.width, r / size_.width);
     }
 
-    // Sum over the rectangle [x0, x1] x [y0, y1] (relative to the event) of descriptor SADs, for every
-    // candidate disparity; returns the same sum against an empty map (the event's side alone).
-    unsigned addRect(const ZouDescriptorMap& self, const ZouDescriptorMap& other, Point r, int sign, int x0, int x1,
-                     int y0, int y1)
+    // Adds the SAD over the rectangle [x0, x1] x [y0, y1] (relative to the event) to every candidate's cost;
+    // returns the same sum against an empty map (the event's side alone).
+    unsigned addRect(const ZouDescriptorMap& self, const ZouDescriptorMap& other, Point r, int x0, int x1, int y0, int y1)
     {
         if (!clipToImage(r, x0, x1, y0, y1))
             return 0;
         const unsigned mass = rectMass(self, r, x0, x1, y0, y1);
-        for (size_t k = 0; k < candidate_.size(); k++)
-        {
-            if (!candidate_[k])
-                continue;
-            const int d = minDisparity_ + (int)k;
-            cost_[k] += rectSad_(self.descriptor(r.x + x0, r.y + y0), other.descriptor(r.x + x0 + sign * d, r.y + y0),
-                                 self.descriptorRowStep(), other.descriptorRowStep(), x1 - x0 + 1, y1 - y0 + 1);
-        }
+        // Candidate i's rectangle is this one shifted by its disparity along the row: offsets_[i] bytes.
+        rectSadBatch_(self.descriptor(r.x + x0, r.y + y0), other.descriptor(r.x + x0, r.y + y0), self.descriptorRowStep(),
+                      other.descriptorRowStep(), offsets_.data(), (int)candidates_.size(), x1 - x0 + 1, y1 - y0 + 1,
+                      cost_.data());
         return mass;
     }
 
@@ -505,54 +503,65 @@ private:
         const ZouDescriptorMap& self = maps_[c];
         const ZouDescriptorMap& other = maps_[1 - c];
         const int sign = c == CAMERA_LEFT ? -1 : 1;  // left x_l matches right x_l - d; right x_r matches left x_r + d
-        bool any = false;
-        for (size_t k = 0; k < candidate_.size(); k++)
+        const int range = maxDisparity_ - minDisparity_ + 1;
+        candidates_.clear();
+        offsets_.clear();
+        for (int k = 0; k < range; k++)
         {
-            const int xo = r.x + sign * (minDisparity_ + (int)k);
-            candidate_[k] = (uchar)((unsigned)xo < (unsigned)size_.width && other.hasStructure(xo, r.y, p));
-            cost_[k] = 0;
-            any |= candidate_[k] != 0;
+            const int xo = r.x + sign * (minDisparity_ + k);
+            const bool structure = (unsigned)xo < (unsigned)size_.width && other.hasStructure(xo, r.y, p);
+            position_[(size_t)k] = structure ? (int)candidates_.size() : -1;
+            if (structure)
+            {
+                candidates_.push_back(k);
+                offsets_.push_back((ptrdiff_t)sign * (minDisparity_ + k) * ZouDescriptorMap::DESCRIPTOR_BYTES);
+            }
         }
-        if (!any)
+        const int n = (int)candidates_.size();
+        if (n == 0)
         {
             m.flags = STEREO_NO_COUNTERPART;
             return m;
         }
+        cost_.assign((size_t)n, 0u);
         int h = costWindow_ / 2;
-        unsigned mass = addRect(self, other, r, sign, -h, h, -h, h);
-        const int n = (int)candidate_.size();
+        unsigned mass = addRect(self, other, r, -h, h, -h, h);
         for (;;)
         {
-            int best = -1;
-            for (int k = 0; k < n; k++)
-                if (candidate_[k] && (best < 0 || cost_[k] < cost_[best]))
-                    best = k;
+            int best = 0;  // index into candidates_, which run by disparity: ties go to the smaller disparity
+            for (int i = 1; i < n; i++)
+                if (cost_[(size_t)i] < cost_[(size_t)best])
+                    best = i;
+            const int kBest = candidates_[(size_t)best];
             unsigned second = std::numeric_limits<unsigned>::max();
-            for (int k = 0; k < n; k++)
-                if (candidate_[k] && std::abs(k - best) > 1)
-                    second = std::min(second, cost_[k]);
+            for (int i = 0; i < n; i++)
+                if (std::abs(candidates_[(size_t)i] - kBest) > 1)
+                    second = std::min(second, cost_[(size_t)i]);
+            const unsigned bestCost = cost_[(size_t)best];
             // Unique: clearly better than every candidate further than one pixel away, and better than no match.
-            bool unique = (uint64)cost_[best] * 100 < (uint64)second * (100 - uniquenessRatio_);
-            if (unique && cost_[best] >= mass)
+            bool unique = (uint64)bestCost * 100 < (uint64)second * (100 - uniquenessRatio_);
+            if (unique && bestCost >= mass)
             {
                 // No better than matching against nothing from this side; the other side may simply hold more
                 // (a more sensitive sensor): compare with its mass too.
-                const int xo = r.x + sign * (minDisparity_ + best);
+                const int xo = r.x + sign * (minDisparity_ + kBest);
                 int x0 = -h, x1 = h, y0 = -h, y1 = h;
                 clipToImage(r, x0, x1, y0, y1);  // the same columns as the costs, never empty (r is inside)
-                unique = cost_[best] < rectMass(other, Point(xo, r.y), x0, x1, y0, y1);
+                unique = bestCost < rectMass(other, Point(xo, r.y), x0, x1, y0, y1);
             }
             if (unique)
             {
-                double d = minDisparity_ + best;
-                if (best > 0 && best < n - 1 && candidate_[best - 1] && candidate_[best + 1])
+                double d = minDisparity_ + kBest;
+                const int below = kBest > 0 ? position_[(size_t)kBest - 1] : -1;
+                const int above = kBest < range - 1 ? position_[(size_t)kBest + 1] : -1;
+                if (below >= 0 && above >= 0)
                 {
-                    const double cm = cost_[best - 1], c0 = cost_[best], cp = cost_[best + 1];
+                    const double cm = cost_[(size_t)below], c0 = bestCost, cp = cost_[(size_t)above];
                     const double denom = cm + cp - 2 * c0;
                     if (denom > 0)
                         d += std::max(-0.5, std::min(0.5, 0.5 * (cm - cp) / denom));
                 }
-                m.counterpartX = r.x + sign * (minDisparity_ + best);
+                m.counterpartX = r.x + sign * (minDisparity_ + kBest);
                 if (!consistent(1 - c, m.counterpartX, r.y, d))
                 {
                     m.flags = STEREO_AMBIGUOUS;
@@ -565,10 +574,10 @@ private:
                 break;
             // Iterative aggregation: add the ring one pixel further out.
             h++;
-            mass += addRect(self, other, r, sign, -h, h, -h, -h);
-            mass += addRect(self, other, r, sign, -h, h, h, h);
-            mass += addRect(self, other, r, sign, -h, -h, -h + 1, h - 1);
-            mass += addRect(self, other, r, sign, h, h, -h + 1, h - 1);
+            mass += addRect(self, other, r, -h, h, -h, -h);
+            mass += addRect(self, other, r, -h, h, h, h);
+            mass += addRect(self, other, r, -h, -h, -h + 1, h - 1);
+            mass += addRect(self, other, r, h, h, -h + 1, h - 1);
         }
         m.flags = STEREO_AMBIGUOUS;
         return m;
@@ -695,8 +704,14 @@ private:
     FrameSgbmMatcher frames_;
     RenderState render_[2];
     int64 lastTime_ = std::numeric_limits<int64>::min();
-    DescriptorRectSadFn rectSad_ = descriptorRectSadFunction();  // the cost kernel for this CPU, fetched once
-    std::vector<uchar> candidate_;
+    // The cost kernels for this CPU, fetched once.
+    DescriptorRectSadFn rectSad_ = descriptorRectSadFunction();
+    DescriptorRectSadBatchFn rectSadBatch_ = descriptorRectSadBatchFunction();
+    // The current event's candidates: disparity index (disparity - min) in increasing order, byte offset of the
+    // other sensor's descriptor from the event's column, and cost; position_ maps a disparity index to its
+    // candidate (-1: the other sensor has no structure there).
+    std::vector<int> candidates_, position_;
+    std::vector<ptrdiff_t> offsets_;
     std::vector<unsigned> cost_;
     struct Neighbour
     {

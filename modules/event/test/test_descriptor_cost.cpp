@@ -2,9 +2,10 @@
 // It is subject to the license terms in the LICENSE file found in the top-level directory
 // of this distribution and at http://opencv.org/license.html.
 
-// The matcher's SIMD cost kernel against its scalar reference: the same integers for every window shape
+// The matcher's SIMD cost kernels against their scalar reference: the same integers for every window shape
 // the matcher uses (1..31 wide, 1..31 high), row steps of the descriptor map and of 0 (a row of zeros),
-// unaligned starts, and counts up to 255 (the largest a descriptor byte holds).
+// unaligned starts, and counts up to 255 (the largest a descriptor byte holds); the batch kernel for every
+// number of candidates up to 11 (its blocks of 4, 2 and 1), shifted either way along the row.
 
 #include "test_precomp.hpp"
 #include "../src/descriptor_cost.hpp"
@@ -44,6 +45,45 @@ TEST(Event_DescriptorCost, simd_kernel_equals_scalar_reference)
     for (size_t i = 0; i < full.size(); i++)
         full[i] = (i % bytes) < 24 ? 255 : 0;
     EXPECT_EQ(simd(full.data(), zeros.data(), 0, 0, 31, 31), 31u * 31u * 24u * 255u);
+}
+
+TEST(Event_DescriptorCost, batch_kernel_equals_one_rectangle_per_candidate)
+{
+    RNG rng(12);
+    const int stride = 80, rows = 34, bytes = 32;
+    std::vector<uchar> a((size_t)stride * rows * bytes), b(a.size());
+    for (size_t i = 0; i < a.size(); i++)
+    {
+        const bool used = (i % bytes) < 24;
+        a[i] = used ? (uchar)(rng.uniform(0, 3) == 0 ? rng.uniform(0, 256) : 0) : 0;
+        b[i] = used ? (uchar)(rng.uniform(0, 3) == 0 ? rng.uniform(0, 256) : 0) : 0;
+    }
+    const size_t step = (size_t)stride * bytes;
+    const DescriptorRectSadBatchFn batch = descriptorRectSadBatchFunction();
+    int checked = 0;
+    for (int sign : { -1, 1 })  // the left sensor's candidates lie to the left, the right one's to the right
+        for (int n = 0; n <= 11; n++)
+            for (int w : { 1, 2, 9, 17, 31 })
+                for (int h : { 1, 9, 17, 31 })
+                {
+                    // The rectangle at column 40; candidate i is shifted by a disparity of 2i + (i % 3) columns.
+                    const uchar* pa = &a[(size_t)40 * bytes];
+                    const uchar* pb = &b[(size_t)(sign < 0 ? 40 : 8) * bytes];
+                    std::vector<ptrdiff_t> offsets;
+                    std::vector<unsigned> expected, sums;
+                    for (int i = 0; i < n; i++)
+                    {
+                        offsets.push_back((ptrdiff_t)sign * (2 * i + i % 3) * bytes);
+                        // Start from a nonzero sum: the kernel adds to it.
+                        expected.push_back(1000u * (unsigned)i + descriptorRectSadScalar(pa, pb + offsets.back(), step, step, w, h));
+                        sums.push_back(1000u * (unsigned)i);
+                    }
+                    batch(pa, pb, step, step, offsets.data(), n, w, h, sums.data());
+                    ASSERT_EQ(expected, sums) << n << " candidates, " << w << " x " << h << ", sign " << sign << " ("
+                                              << descriptorRectSadKernel() << ")";
+                    checked++;
+                }
+    EXPECT_EQ(checked, 2 * 12 * 5 * 4);
 }
 
 }}  // namespace
