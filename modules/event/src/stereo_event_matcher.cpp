@@ -175,16 +175,17 @@ public:
         Mat img = image.getMat();
         img.setTo(Scalar::all(0));
         const Mat lut = colourLut();
-        const RenderState& rs = render_[camera];
+        const std::vector<PixelEstimate>& last = lastEstimate_[camera];
         for (int y = 0; y < size_.height; y++)
         {
             Vec3b* row = img.ptr<Vec3b>(y);
             for (int x = 0; x < size_.width; x++)
             {
                 const size_t i = (size_t)y * size_.width + x;
-                if (rs.disparity[i] < 0 || !(rs.t[i] <= t && t < (double)rs.until[i]))
+                const PixelEstimate& q = last[i];
+                if (q.disparity < 0 || !(q.t <= t && t < (double)q.until))
                     continue;
-                row[x] = lut.at<Vec3b>(colourIndex(rs.disparity[i]));
+                row[x] = lut.at<Vec3b>(colourIndex(q.disparity));
             }
         }
         if (!colourBar)
@@ -209,15 +210,12 @@ public:
         {
             maps_[c].configure(size_, descriptorWindow_, maxVectorLength_, margin);
             estimators_[c]->reset();
-            RenderState& rs = render_[c];
-            rs.t.assign((size_t)size_.area(), 0);
-            rs.until.assign((size_t)size_.area(), 0);
-            rs.disparity.assign((size_t)size_.area(), -1.f);
+            lastEstimate_[c].assign((size_t)size_.area(), PixelEstimate());
         }
         frames_.configure(size_, minDisparity_, maxDisparity_, frameWindow_);
         lastTime_ = std::numeric_limits<int64>::min();
+        neighbours_.resize((size_t)costWindow_ * costWindow_);
         const size_t range = (size_t)(maxDisparity_ - minDisparity_ + 1);
-        position_.assign(range, -1);
         candidates_.reserve(range);
         offsets_.reserve(range);
         cost_.reserve(range);
@@ -401,10 +399,13 @@ public:
     String getDefaultName() const CV_OVERRIDE { return "StereoEventMatcher"; }
 
 private:
-    struct RenderState
+    // Per pixel of each sensor, its last event's time, the end of its activity and its disparity (-1: none),
+    // for the left-right check and for renderDisparity. One struct, not three arrays: the check reads
+    // disparity and end together, and every event writes all three (one cache line instead of three).
+    struct PixelEstimate
     {
-        std::vector<int64> t, until;  // last event per pixel and the end of its activity
-        std::vector<float> disparity;
+        int64 t = 0, until = 0;
+        float disparity = -1.f;
     };
 
     static void checkMode(int mode)
@@ -503,20 +504,19 @@ private:
         const ZouDescriptorMap& self = maps_[c];
         const ZouDescriptorMap& other = maps_[1 - c];
         const int sign = c == CAMERA_LEFT ? -1 : 1;  // left x_l matches right x_l - d; right x_r matches left x_r + d
-        const int range = maxDisparity_ - minDisparity_ + 1;
         candidates_.clear();
         offsets_.clear();
-        for (int k = 0; k < range; k++)
-        {
-            const int xo = r.x + sign * (minDisparity_ + k);
-            const bool structure = (unsigned)xo < (unsigned)size_.width && other.hasStructure(xo, r.y, p);
-            position_[(size_t)k] = structure ? (int)candidates_.size() : -1;
-            if (structure)
+        // Disparity indices k whose column xo = r.x + sign * (min + k) lies in the other image; there, a candidate
+        // is a column where the other sensor has structure of this polarity.
+        const int kEnd = std::min(maxDisparity_, sign < 0 ? r.x : size_.width - 1 - r.x) - minDisparity_ + 1;
+        const uchar* structure = other.nearestRow(r.y, p);
+        const int x0 = r.x + sign * minDisparity_;
+        for (int k = 0; k < kEnd; k++)
+            if (structure[x0 + sign * k] != ZouDescriptorMap::NONE)
             {
                 candidates_.push_back(k);
                 offsets_.push_back((ptrdiff_t)sign * (minDisparity_ + k) * ZouDescriptorMap::DESCRIPTOR_BYTES);
             }
-        }
         const int n = (int)candidates_.size();
         if (n == 0)
         {
@@ -552,11 +552,11 @@ private:
             if (unique)
             {
                 double d = minDisparity_ + kBest;
-                const int below = kBest > 0 ? position_[(size_t)kBest - 1] : -1;
-                const int above = kBest < range - 1 ? position_[(size_t)kBest + 1] : -1;
-                if (below >= 0 && above >= 0)
+                // Candidates run by disparity: the neighbours, when they are candidates, are next to the best.
+                if (best > 0 && best < n - 1 && candidates_[(size_t)best - 1] == kBest - 1 &&
+                    candidates_[(size_t)best + 1] == kBest + 1)
                 {
-                    const double cm = cost_[(size_t)below], c0 = bestCost, cp = cost_[(size_t)above];
+                    const double cm = cost_[(size_t)best - 1], c0 = bestCost, cp = cost_[(size_t)best + 1];
                     const double denom = cm + cp - 2 * c0;
                     if (denom > 0)
                         d += std::max(-0.5, std::min(0.5, 0.5 * (cm - cp) / denom));
@@ -588,14 +588,14 @@ private:
     // within one pixel. Without any there is nothing to contradict the match.
     bool consistent(int c, int x, int y, double d)
     {
-        const RenderState& rs = render_[c];
+        const std::vector<PixelEstimate>& last = lastEstimate_[c];
         disparities_.clear();
         for (int yy = std::max(0, y - 1); yy <= std::min(size_.height - 1, y + 1); yy++)
             for (int xx = std::max(0, x - 1); xx <= std::min(size_.width - 1, x + 1); xx++)
             {
                 const size_t i = (size_t)yy * size_.width + xx;
-                if (rs.disparity[i] >= 0 && lastTime_ < rs.until[i])
-                    disparities_.push_back(rs.disparity[i]);
+                if (last[i].disparity >= 0 && lastTime_ < last[i].until)
+                    disparities_.push_back(last[i].disparity);
             }
         if (disparities_.empty())
             return true;
@@ -610,21 +610,25 @@ private:
     {
         const ZouDescriptorMap& map = maps_[c];
         const int h = costWindow_ / 2;
-        neighbours_.clear();
+        // Every pixel is written, and the end advances past those with a lifetime: no branch on the (random)
+        // activity pattern. neighbours_ holds a whole window (reset()).
+        Neighbour* const first = neighbours_.data();
+        Neighbour* end = first;
         const int x0 = std::max(0, x - h), x1 = std::min(size_.width - 1, x + h);
         for (int yy = std::max(0, y - h); yy <= std::min(size_.height - 1, y + h); yy++)
         {
             const float* row = map.lifetimeRow(yy, p);
             for (int xx = x0; xx <= x1; xx++)
-                if (row[xx] > 0)
-                    neighbours_.push_back(Neighbour{ row[xx], xx, yy });
+            {
+                *end = Neighbour{ row[xx], xx, yy };
+                end += row[xx] > 0;
+            }
         }
-        if (neighbours_.empty())
+        if (end == first)
             return false;
-        const size_t mid = neighbours_.size() / 2;
-        std::nth_element(neighbours_.begin(), neighbours_.begin() + (std::ptrdiff_t)mid, neighbours_.end(),
-                         [](const Neighbour& a, const Neighbour& b) { return a.lifetime < b.lifetime; });
-        const Neighbour& q = neighbours_[mid];
+        const std::ptrdiff_t mid = (end - first) / 2;
+        std::nth_element(first, first + mid, end, [](const Neighbour& a, const Neighbour& b) { return a.lifetime < b.lifetime; });
+        const Neighbour& q = first[mid];
         lifetime = q.lifetime;
         flow = map.flow(q.x, q.y, p);
         return true;
@@ -632,11 +636,10 @@ private:
 
     void remember(int c, Point r, int64 t, int64 activeFor, float disparity)
     {
-        RenderState& rs = render_[c];
-        const size_t i = (size_t)r.y * size_.width + r.x;
-        rs.t[i] = t;
-        rs.until[i] = timeAfter(t, activeFor);
-        rs.disparity[i] = disparity;
+        PixelEstimate& q = lastEstimate_[c][(size_t)r.y * size_.width + r.x];
+        q.t = t;
+        q.until = timeAfter(t, activeFor);
+        q.disparity = disparity;
     }
 
     template <typename Store>
@@ -702,15 +705,14 @@ private:
     Ptr<LifetimeEstimator> estimators_[2];
     ZouDescriptorMap maps_[2];
     FrameSgbmMatcher frames_;
-    RenderState render_[2];
+    std::vector<PixelEstimate> lastEstimate_[2];
     int64 lastTime_ = std::numeric_limits<int64>::min();
     // The cost kernels for this CPU, fetched once.
     DescriptorRectSadFn rectSad_ = descriptorRectSadFunction();
     DescriptorRectSadBatchFn rectSadBatch_ = descriptorRectSadBatchFunction();
     // The current event's candidates: disparity index (disparity - min) in increasing order, byte offset of the
-    // other sensor's descriptor from the event's column, and cost; position_ maps a disparity index to its
-    // candidate (-1: the other sensor has no structure there).
-    std::vector<int> candidates_, position_;
+    // other sensor's descriptor from the event's column, and cost.
+    std::vector<int> candidates_;
     std::vector<ptrdiff_t> offsets_;
     std::vector<unsigned> cost_;
     struct Neighbour

@@ -24,7 +24,11 @@ pixel that is itself active votes into all 12 bins of its polarity.
 Activating an event can only shorten vectors within the maximum length of it; deactivating one
 re-searches only the pixels whose nearest event it was. Each vector change moves one vote in N x N
 descriptors. The descriptor map has a zero margin around the image so that cost windows can run past the
-border without checks. Expiry: an ExpiryHeap over pixel x polarity. */
+border without checks. Expiry: an ExpiryHeap over pixel x polarity.
+
+The per-pixel arrays (activity, nearest vector, lifetime, flow) have a border of the maximum vector length
+around the image, so that the vector offsets are plain index offsets: a border pixel is never active and its
+"nearest vector" is offset 0 (itself), so updates skip it without bounds checks. */
 class CV_EXPORTS ZouDescriptorMap  // exported for opencv_perf_event only; not public API
 {
 public:
@@ -45,6 +49,8 @@ public:
     bool isActive(int x, int y, int p) const { return active_[id(x, y, p)] != 0; }
     // An active event of polarity p lies within the maximum vector length of (x, y).
     bool hasStructure(int x, int y, int p) const { return nearest_[id(x, y, p)] != NONE; }
+    // Row y of hasStructure as codes: NONE where no active event of polarity p is within reach.
+    const uchar* nearestRow(int y, int p) const { return &nearest_[(size_t)id(0, y, p)]; }
     float lifetime(int x, int y, int p) const { return lifetime_[id(x, y, p)]; }
     // Row y of the lifetimes of polarity p: > 0 exactly where an active event has a lifetime (an inactive
     // pixel's is 0), so that a window can be scanned on one array.
@@ -58,24 +64,24 @@ public:
     void expireUntil(int64 t);
 
 private:
-    int id(int x, int y, int p) const { return (p * size_.height + y) * size_.width + x; }
+    // Index of (x, y, p) in the per-pixel arrays (with their border).
+    int id(int x, int y, int p) const { return (p * paddedHeight_ + y + border_) * paddedWidth_ + x + border_; }
     void deactivateId(int id);
-    int scanNearest(int x, int y, int p, int from) const;
-    // The descriptors of polarity p's bins that (x, y)'s vector votes into: the N x N window around it,
-    // clipped to the image (first bin of the top-left one, and the window's size).
-    struct VoteWindow
-    {
-        uchar* first;
-        int width, height;
-    };
-    VoteWindow voteWindow(int x, int y, int p);
+    // The nearest active event of pixel id from offset `from` on (NONE: none).
+    int scanNearest(int id, int from) const;
+    // Calls op(bins) with polarity p's first bin in each descriptor that (x, y)'s vector votes into: the N x N
+    // window around it, clipped to the image.
+    template <typename Op>
+    void forEachVoted(int x, int y, int p, Op op);
     void vote(int x, int y, int p, int code, int delta);
     // Moves the vote of (x, y)'s vector from oldCode to newCode (either may be NONE) in the window's descriptors.
     void revote(int x, int y, int p, int oldCode, int newCode);
 
     Size size_;
     int window_ = 5, maxVectorLength_ = 3, margin_ = 0, stride_ = 0;
+    int border_ = 0, paddedWidth_ = 0, paddedHeight_ = 0;  // of the per-pixel arrays
     std::vector<Point> offsets_;  // candidate vectors to the nearest event, by length then angle
+    std::vector<int> idOffsets_;  // the same as offsets in the per-pixel arrays
     std::vector<uchar> bins_;     // orientation bin of each offset (offset 0 = the pixel itself: all bins)
     std::vector<uchar> active_, nearest_;
     std::vector<float> lifetime_;
