@@ -21,8 +21,8 @@ the candidates' rectangles of the other, which share their rows and differ by a 
 typedef void (*DescriptorRectSadBatchFn)(const uchar* a, const uchar* b, size_t aStep, size_t bStep,
                                          const ptrdiff_t* offsets, int n, int width, int height, unsigned* sums);
 
-/** The DescriptorRectSadFn for this CPU, chosen on the first call; the matcher's inner loop, so callers fetch
-it once. The AVX2 version (when the CPU has it) adds one 32-byte SAD per descriptor into 64-bit lanes and
+/** The DescriptorRectSadFn for this CPU, chosen on the first call; the matcher computes its window masses with
+it (against a row of zeros) and fetches it once. The AVX2 version (when the CPU has it) adds one 32-byte SAD per descriptor into 64-bit lanes and
 reduces once per call; the SSE2 one does the same with two 16-byte halves; elsewhere the scalar loop. All
 give the same integers. (Exported for opencv_test_event and opencv_perf_event; not public API.) */
 CV_EXPORTS DescriptorRectSadFn descriptorRectSadFunction();
