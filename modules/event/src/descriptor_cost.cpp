@@ -24,11 +24,13 @@ unsigned descriptorRectSadScalar(const uchar* a, const uchar* b, size_t aStep, s
     return sum;
 }
 
-void descriptorRectSadBatchScalar(const uchar* a, const uchar* b, size_t aStep, size_t bStep, const ptrdiff_t* offsets,
-                                  int n, int width, int height, unsigned* sums)
+// A batch kernel from a one-rectangle kernel: one call per candidate (the scalar and SSE2 versions).
+template <DescriptorRectSadFn rectSad>
+static void rectSadEachCandidate(const uchar* a, const uchar* b, size_t aStep, size_t bStep, const ptrdiff_t* offsets,
+                                 int n, int width, int height, unsigned* sums)
 {
     for (int i = 0; i < n; i++)
-        sums[i] += descriptorRectSadScalar(a, b + offsets[i], aStep, bStep, width, height);
+        sums[i] += rectSad(a, b + offsets[i], aStep, bStep, width, height);
 }
 
 #ifdef OPENCV_EVENT_X86_KERNELS
@@ -45,38 +47,6 @@ static unsigned rectSadSse2(const uchar* a, const uchar* b, size_t aStep, size_t
             acc = _mm_add_epi64(acc, _mm_add_epi64(lo, hi));
         }
     return (unsigned)(_mm_cvtsi128_si32(acc) + _mm_cvtsi128_si32(_mm_unpackhi_epi64(acc, acc)));
-}
-
-__attribute__((target("avx2"))) static unsigned rectSadAvx2(const uchar* a, const uchar* b, size_t aStep, size_t bStep,
-                                                            int width, int height)
-{
-    // Two accumulators so that consecutive adds do not wait on each other.
-    __m256i acc = _mm256_setzero_si256(), acc2 = _mm256_setzero_si256();
-    const int bytes = width * DESCRIPTOR_BYTES;
-    for (int y = 0; y < height; y++, a += aStep, b += bStep)
-    {
-        int x = 0;
-        for (; x + 2 * DESCRIPTOR_BYTES <= bytes; x += 2 * DESCRIPTOR_BYTES)
-        {
-            acc = _mm256_add_epi64(acc, _mm256_sad_epu8(_mm256_loadu_si256((const __m256i*)(a + x)),
-                                                        _mm256_loadu_si256((const __m256i*)(b + x))));
-            acc2 = _mm256_add_epi64(acc2, _mm256_sad_epu8(_mm256_loadu_si256((const __m256i*)(a + x + 32)),
-                                                          _mm256_loadu_si256((const __m256i*)(b + x + 32))));
-        }
-        if (x < bytes)
-            acc = _mm256_add_epi64(acc, _mm256_sad_epu8(_mm256_loadu_si256((const __m256i*)(a + x)),
-                                                        _mm256_loadu_si256((const __m256i*)(b + x))));
-    }
-    acc = _mm256_add_epi64(acc, acc2);
-    const __m128i s = _mm_add_epi64(_mm256_castsi256_si128(acc), _mm256_extracti128_si256(acc, 1));
-    return (unsigned)(_mm_cvtsi128_si32(s) + _mm_cvtsi128_si32(_mm_unpackhi_epi64(s, s)));
-}
-
-static void rectSadBatchSse2(const uchar* a, const uchar* b, size_t aStep, size_t bStep, const ptrdiff_t* offsets, int n,
-                             int width, int height, unsigned* sums)
-{
-    for (int i = 0; i < n; i++)
-        sums[i] += rectSadSse2(a, b + offsets[i], aStep, bStep, width, height);
 }
 
 // K candidates in one pass over the rectangle: each descriptor of a is loaded once and compared with the K
@@ -112,6 +82,16 @@ __attribute__((target("avx2"))) static inline void rectSadBlockAvx2(const uchar*
     }
 }
 
+// One rectangle (the window masses): the block with one candidate at offset 0.
+__attribute__((target("avx2"))) static unsigned rectSadAvx2(const uchar* a, const uchar* b, size_t aStep, size_t bStep,
+                                                            int width, int height)
+{
+    const ptrdiff_t offset = 0;
+    unsigned sum = 0;
+    rectSadBlockAvx2<1>(a, b, aStep, bStep, &offset, width, height, &sum);
+    return sum;
+}
+
 __attribute__((target("avx2"))) static void rectSadBatchAvx2(const uchar* a, const uchar* b, size_t aStep, size_t bStep,
                                                              const ptrdiff_t* offsets, int n, int width, int height,
                                                              unsigned* sums)
@@ -140,7 +120,7 @@ struct Kernel
 static const Kernel& kernel()
 {
     static const Kernel k = cv::checkHardwareSupport(CV_CPU_AVX2) ? Kernel{ rectSadAvx2, rectSadBatchAvx2, "avx2" }
-                                                                  : Kernel{ rectSadSse2, rectSadBatchSse2, "sse2" };
+                                                                  : Kernel{ rectSadSse2, rectSadEachCandidate<rectSadSse2>, "sse2" };
     return k;
 }
 
@@ -168,7 +148,7 @@ DescriptorRectSadFn descriptorRectSadFunction()
 
 DescriptorRectSadBatchFn descriptorRectSadBatchFunction()
 {
-    return descriptorRectSadBatchScalar;
+    return rectSadEachCandidate<descriptorRectSadScalar>;
 }
 
 const char* descriptorRectSadKernel()

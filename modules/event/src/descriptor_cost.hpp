@@ -22,21 +22,19 @@ typedef void (*DescriptorRectSadBatchFn)(const uchar* a, const uchar* b, size_t 
                                          const ptrdiff_t* offsets, int n, int width, int height, unsigned* sums);
 
 /** The DescriptorRectSadFn for this CPU, chosen on the first call; the matcher computes its window masses with
-it (against a row of zeros) and fetches it once. The AVX2 version (when the CPU has it) adds one 32-byte SAD per descriptor into 64-bit lanes and
-reduces once per call; the SSE2 one does the same with two 16-byte halves; elsewhere the scalar loop. All
-give the same integers. (Exported for opencv_test_event and opencv_perf_event; not public API.) */
+it (against a row of zeros) and fetches it once. The AVX2 version (when the CPU has it) is the batch kernel's
+one-candidate block: one 32-byte SAD per descriptor into 64-bit lanes, reduced once per call; the SSE2 one
+does the same with two 16-byte halves; elsewhere the scalar loop. All give the same integers. (Exported for
+opencv_test_event and opencv_perf_event; not public API.) */
 CV_EXPORTS DescriptorRectSadFn descriptorRectSadFunction();
 
 /** The DescriptorRectSadBatchFn for this CPU, chosen like descriptorRectSadFunction(). The AVX2 version costs
-four candidates per pass over the rectangle: each descriptor of @p a is loaded once for the four. */
+four candidates per pass over the rectangle: each descriptor of @p a is loaded once for the four. The SSE2 and
+scalar versions call their one-rectangle kernel once per candidate. */
 CV_EXPORTS DescriptorRectSadBatchFn descriptorRectSadBatchFunction();
 
 /** The scalar version: the reference the tests compare the SIMD ones with. */
 CV_EXPORTS unsigned descriptorRectSadScalar(const uchar* a, const uchar* b, size_t aStep, size_t bStep, int width, int height);
-
-/** The scalar batch version: descriptorRectSadScalar once per candidate. */
-CV_EXPORTS void descriptorRectSadBatchScalar(const uchar* a, const uchar* b, size_t aStep, size_t bStep,
-                                             const ptrdiff_t* offsets, int n, int width, int height, unsigned* sums);
 
 /** Name of the version descriptorRectSadFunction() returns ("avx2", "sse2" or "scalar"), for messages. */
 CV_EXPORTS const char* descriptorRectSadKernel();

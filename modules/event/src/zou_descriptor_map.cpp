@@ -172,11 +172,10 @@ void ZouDescriptorMap::deactivateId(int i)
     lifetime_[i] = 0.f;
     const int plane = paddedWidth_ * paddedHeight_;
     const int p = i / plane, x = (i % plane) % paddedWidth_ - border_, y = (i % plane) / paddedWidth_ - border_;
-    uchar* nearest = &nearest_[(size_t)i];
     for (int k = 0; k < (int)idOffsets_.size(); k++)
     {
         const int s = i - idOffsets_[(size_t)k];
-        uchar& cur = nearest[-idOffsets_[(size_t)k]];
+        uchar& cur = nearest_[(size_t)s];
         if (cur != k)
             continue;
         // Offsets before k were all inactive (else one of them would be the nearest): search after k.

@@ -12,18 +12,24 @@
 
 namespace opencv_test { namespace {
 
+// Sparse counts like real descriptors (one byte in `oneIn` nonzero, any value up to 255, so some saturated);
+// bytes 24..31 of each 32-byte descriptor stay 0 as in the map. a and b are drawn alternately, byte by byte.
+void fillSparseDescriptors(RNG& rng, int oneIn, std::vector<uchar>& a, std::vector<uchar>& b)
+{
+    for (size_t i = 0; i < a.size(); i++)
+    {
+        const bool used = (i % 32) < 24;
+        a[i] = used ? (uchar)(rng.uniform(0, oneIn) == 0 ? rng.uniform(0, 256) : 0) : 0;
+        b[i] = used ? (uchar)(rng.uniform(0, oneIn) == 0 ? rng.uniform(0, 256) : 0) : 0;
+    }
+}
+
 TEST(Event_DescriptorCost, simd_kernel_equals_scalar_reference)
 {
     RNG rng(11);
     const int stride = 40, rows = 34, bytes = 32;
     std::vector<uchar> a((size_t)stride * rows * bytes + 64), b(a.size());
-    for (size_t i = 0; i < a.size(); i++)
-    {
-        // Sparse counts like real descriptors, and some saturated ones; bytes 24..31 stay 0 as in the map.
-        const bool used = (i % bytes) < 24;
-        a[i] = used ? (uchar)(rng.uniform(0, 4) == 0 ? rng.uniform(0, 256) : 0) : 0;
-        b[i] = used ? (uchar)(rng.uniform(0, 4) == 0 ? rng.uniform(0, 256) : 0) : 0;
-    }
+    fillSparseDescriptors(rng, 4, a, b);
     const size_t step = (size_t)stride * bytes;
     const DescriptorRectSadFn simd = descriptorRectSadFunction();
     int checked = 0;
@@ -52,12 +58,7 @@ TEST(Event_DescriptorCost, batch_kernel_equals_one_rectangle_per_candidate)
     RNG rng(12);
     const int stride = 80, rows = 34, bytes = 32;
     std::vector<uchar> a((size_t)stride * rows * bytes), b(a.size());
-    for (size_t i = 0; i < a.size(); i++)
-    {
-        const bool used = (i % bytes) < 24;
-        a[i] = used ? (uchar)(rng.uniform(0, 3) == 0 ? rng.uniform(0, 256) : 0) : 0;
-        b[i] = used ? (uchar)(rng.uniform(0, 3) == 0 ? rng.uniform(0, 256) : 0) : 0;
-    }
+    fillSparseDescriptors(rng, 3, a, b);
     const size_t step = (size_t)stride * bytes;
     const DescriptorRectSadBatchFn batch = descriptorRectSadBatchFunction();
     int checked = 0;
