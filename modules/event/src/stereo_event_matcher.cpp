@@ -538,16 +538,20 @@ private:
                 if (std::abs(candidates_[(size_t)i] - kBest) > 1)
                     second = std::min(second, cost_[(size_t)i]);
             const unsigned bestCost = cost_[(size_t)best];
-            // Unique: clearly better than every candidate further than one pixel away, and better than no match.
-            bool unique = (uint64)bestCost * 100 < (uint64)second * (100 - uniquenessRatio_);
-            if (unique && bestCost >= mass)
+            // Unique: clearly better than every candidate further than one pixel away, and clearly better than
+            // no match. "No counterpart (yet)" is one more hypothesis, with the cost of matching against nothing
+            // (the window's mass); a winner that only just beats it is most often a neighbour of a counterpart
+            // that has not arrived yet, off by 2 px, so it must win by the same margin as against a candidate.
+            const uint64 margin = (uint64)(100 - uniquenessRatio_);
+            bool unique = (uint64)bestCost * 100 < (uint64)second * margin;
+            if (unique && (uint64)bestCost * 100 >= (uint64)mass * margin)
             {
-                // No better than matching against nothing from this side; the other side may simply hold more
-                // (a more sensitive sensor): compare with its mass too.
+                // Not clearly better than nothing from this side; the other side may simply hold more (a more
+                // sensitive sensor): compare with its mass too.
                 const int xo = r.x + sign * (minDisparity_ + kBest);
                 int x0 = -h, x1 = h, y0 = -h, y1 = h;
                 clipToImage(r, x0, x1, y0, y1);  // the same columns as the costs, never empty (r is inside)
-                unique = bestCost < rectMass(other, Point(xo, r.y), x0, x1, y0, y1);
+                unique = (uint64)bestCost * 100 < (uint64)rectMass(other, Point(xo, r.y), x0, x1, y0, y1) * margin;
             }
             if (unique)
             {

@@ -153,18 +153,23 @@ TEST(StereoEventMatcher, events_at_the_outer_border_keep_their_disparity)
     EXPECT_GE(a.density, 90.0);
 }
 
-// What users do today (frames + SGBM) on the occlusion scene: COUPLED estimates more events (higher
-// density), gets at least 5 points more of all non-occluded events right (within 1 px), and its estimates
-// are as precise (share within 1 px no more than 0.5 points below SGBM's; measured: equal).
-TEST(StereoEventMatcher, coupled_beats_frame_sgbm_on_two_planes)
+// What users do today (frames + SGBM), on the fronto-parallel plane and the occlusion scene: COUPLED
+// estimates more events (higher density), gets at least 5 points more of all non-occluded events right
+// (within 1 px), and its estimates are as precise: the share within 1 px no more than 0.15 points below
+// SGBM's. Measured at 264 ms: plane 99.92 % against 99.99 % (it was 99.78 % before a winner had to beat
+// "no counterpart" by the uniqueness margin), two_planes 99.5 % against 99.1 %.
+TEST(StereoEventMatcher, coupled_beats_frame_sgbm_on_textured_scenes)
 {
-    const Accuracy coupled = simulate("two_planes", STEREO_COUPLED, 264);
-    const Accuracy sgbm = simulate("two_planes", STEREO_FRAME_SGBM, 264);
-    std::cout << "coupled: density " << coupled.density << " %, within 1 px " << coupled.within1 << " %; sgbm: density "
-              << sgbm.density << " %, within 1 px " << sgbm.within1 << " %" << std::endl;
-    EXPECT_GE(coupled.density, sgbm.density);
-    EXPECT_GE(coupled.density * coupled.within1 / 100, sgbm.density * sgbm.within1 / 100 + 5);
-    EXPECT_GE(coupled.within1, sgbm.within1 - 0.5);
+    for (const char* scene : { "plane", "two_planes" })
+    {
+        const Accuracy coupled = simulate(scene, STEREO_COUPLED, 264);
+        const Accuracy sgbm = simulate(scene, STEREO_FRAME_SGBM, 264);
+        std::cout << scene << ": coupled: density " << coupled.density << " %, within 1 px " << coupled.within1
+                  << " %; sgbm: density " << sgbm.density << " %, within 1 px " << sgbm.within1 << " %" << std::endl;
+        EXPECT_GE(coupled.density, sgbm.density) << scene;
+        EXPECT_GE(coupled.density * coupled.within1 / 100, sgbm.density * sgbm.within1 / 100 + 5) << scene;
+        EXPECT_GE(coupled.within1, sgbm.within1 - 0.15) << scene;
+    }
 }
 
 // The paper's Figure 4: with a less sensitive right sensor, its events are too sparse for plane fits;

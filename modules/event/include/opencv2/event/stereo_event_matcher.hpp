@@ -68,8 +68,9 @@ event's polarity, the cost is the sum over a W x W window of the SADs between th
 the candidate's; near the border the window is clipped to the event's own image (past it both sensors are
 empty, which would favour candidates that also run past the other border). Aggregation is iterative: while the winner is not unique, the window grows by a ring of
 one pixel, up to A x A. The winner (with sub-pixel parabola refinement) is accepted when its cost is below
-(100 - uniquenessRatio) % of every candidate further than one pixel away; otherwise the event is flagged
-ambiguous and gets no disparity rather than a wrong one.
+(100 - uniquenessRatio) % of every candidate further than one pixel away and of matching against nothing
+(the window's descriptor mass, on either sensor: "no counterpart yet" is one more hypothesis); otherwise the
+event is flagged ambiguous and gets no disparity rather than a wrong one.
 
 **Modes** (StereoMatchMode), all with the same outputs:
 - COUPLED: the event is matched first; on a match its lifetime is the median lifetime of the active events
@@ -149,7 +150,7 @@ public:
     /** @brief A, the side of the largest window the iterative aggregation grows to (odd, >= W, default 17). */
     CV_WRAP virtual int getAggregationWindow() const = 0;
     CV_WRAP virtual void setAggregationWindow(int a) = 0;
-    /** @brief Margin [%] by which the best cost must beat every other candidate (default 25). */
+    /** @brief Margin [%] by which the best cost must beat every other candidate and "no counterpart" (default 25). */
     CV_WRAP virtual int getUniquenessRatio() const = 0;
     CV_WRAP virtual void setUniquenessRatio(int ratio) = 0;
     /** @brief FIXED_INTERVAL: how long every event stays active [us] (default 10000). */
