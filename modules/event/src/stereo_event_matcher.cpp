@@ -543,15 +543,18 @@ private:
             // (the window's mass); a winner that only just beats it is most often a neighbour of a counterpart
             // that has not arrived yet, off by 2 px, so it must win by the same margin as against a candidate.
             const uint64 margin = (uint64)(100 - uniquenessRatio_);
-            bool unique = (uint64)bestCost * 100 < (uint64)second * margin;
-            if (unique && (uint64)bestCost * 100 >= (uint64)mass * margin)
+            const auto clearlyBelow = [margin](unsigned cost, unsigned alternative) {
+                return (uint64)cost * 100 < (uint64)alternative * margin;
+            };
+            const int xo = r.x + sign * (minDisparity_ + kBest);  // the counterpart's column
+            bool unique = clearlyBelow(bestCost, second);
+            if (unique && !clearlyBelow(bestCost, mass))
             {
                 // Not clearly better than nothing from this side; the other side may simply hold more (a more
                 // sensitive sensor): compare with its mass too.
-                const int xo = r.x + sign * (minDisparity_ + kBest);
                 int x0 = -h, x1 = h, y0 = -h, y1 = h;
                 clipToImage(r, x0, x1, y0, y1);  // the same columns as the costs, never empty (r is inside)
-                unique = (uint64)bestCost * 100 < (uint64)rectMass(other, Point(xo, r.y), x0, x1, y0, y1) * margin;
+                unique = clearlyBelow(bestCost, rectMass(other, Point(xo, r.y), x0, x1, y0, y1));
             }
             if (unique)
             {
@@ -565,7 +568,7 @@ private:
                     if (denom > 0)
                         d += std::max(-0.5, std::min(0.5, 0.5 * (cm - cp) / denom));
                 }
-                m.counterpartX = r.x + sign * (minDisparity_ + kBest);
+                m.counterpartX = xo;
                 if (!consistent(1 - c, m.counterpartX, r.y, d))
                 {
                     m.flags = STEREO_AMBIGUOUS;
