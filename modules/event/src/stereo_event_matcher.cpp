@@ -139,6 +139,14 @@ public:
             activeFor = fixedInterval_;
         else if (est.lifetime > 0)
             activeFor = std::max<int64>(1, std::min<int64>((int64)std::llround(est.lifetime), maxLifetime_));
+        else if (e.t < coldStartEnd_)
+        {
+            // Cold start: during the plane fit's first time window the surface cannot hold the history a fit
+            // needs, so a scene's first edges fail it for want of neighbours, not for being noise, and without
+            // them neither sensor has anything active to match against. Such an event is kept visible to
+            // matching for the fixed interval (as in FIXED_INTERVAL) but gets no lifetime of its own.
+            activeFor = fixedInterval_;
+        }
         if (activeFor > 0)
             maps_[c].activate(r.x, r.y, p, timeAfter(e.t, activeFor), est.lifetime, est.flow);
         else
@@ -455,6 +463,11 @@ private:
                                          "previous one (t=%lld us): events of both sensors must come merged in time order "
                                          "(mergeStereoEvents, EventCapture::openStereo)", (long long)e.t, e.x, e.y,
                                          e.camera, (long long)lastTime_));
+        // The stream starts, or resumes after a gap longer than the plane fit's time window: the surfaces hold
+        // no usable history, and the cold start (processEvent) runs for one time window.
+        const int64 window = (int64)std::min(estimators_[e.camera]->getTimeWindow(), 1e18);
+        if (lastTime_ == std::numeric_limits<int64>::min() || e.t > timeAfter(lastTime_, window))
+            coldStartEnd_ = timeAfter(e.t, window);
         lastTime_ = e.t;
         if (lut_[e.camera].empty())
             return Point(e.x, e.y);
@@ -714,6 +727,7 @@ private:
     FrameSgbmMatcher frames_;
     std::vector<PixelEstimate> lastEstimate_[2];
     int64 lastTime_ = std::numeric_limits<int64>::min();
+    int64 coldStartEnd_ = 0;  // the end of the cold start: see admit()
     // The cost kernels for this CPU, fetched once.
     DescriptorRectSadFn rectSad_ = descriptorRectSadFunction();
     DescriptorRectSadBatchFn rectSadBatch_ = descriptorRectSadBatchFunction();

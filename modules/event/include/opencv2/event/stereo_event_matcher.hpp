@@ -84,6 +84,12 @@ event is flagged ambiguous and gets no disparity rather than a wrong one.
   EventCapture with EVENT_CAP_PROP_WINDOW_US = the frame window) gives exactly that; a window split over
   several calls is computed from the events seen so far. processEvent() is not available in this mode.
 
+**Cold start** (COUPLED, DECOUPLED): for one time window of the plane fit after the first event (after
+create() or reset(), or after a gap in the stream longer than that window), the surface cannot yet hold the
+history a fit needs. An event that gets no lifetime then is kept active for getFixedInterval(), without a
+lifetime of its own, so that both sensors have something to match against from the start; afterwards such
+an event is inactive, as the paper has it.
+
 Memory is O(sensor pixels): the per-pixel maps, an expiry heap over pixels and the two LifetimeEstimators.
 */
 class CV_EXPORTS_W StereoEventMatcher : public Algorithm
@@ -153,7 +159,8 @@ public:
     /** @brief Margin [%] by which the best cost must beat every other candidate and "no counterpart" (default 25). */
     CV_WRAP virtual int getUniquenessRatio() const = 0;
     CV_WRAP virtual void setUniquenessRatio(int ratio) = 0;
-    /** @brief FIXED_INTERVAL: how long every event stays active [us] (default 10000). */
+    /** @brief FIXED_INTERVAL: how long every event stays active [us] (default 10000); in the other per-event
+    modes, how long an event without a lifetime stays active during the cold start. */
     CV_WRAP virtual double getFixedInterval() const = 0;
     CV_WRAP virtual void setFixedInterval(double us) = 0;
     /** @brief FRAME_SGBM: accumulation window [us] (default 33000). */
