@@ -24,13 +24,17 @@ unsigned descriptorRectSadScalar(const uchar* a, const uchar* b, size_t aStep, s
     return sum;
 }
 
-// A batch kernel from a one-rectangle kernel: one call per candidate (the scalar and SSE2 versions).
+// A batch kernel from a one-rectangle kernel: one call per candidate, and one against a row of zeros for the
+// mass (the scalar and SSE2 versions).
 template <DescriptorRectSadFn rectSad>
-static void rectSadEachCandidate(const uchar* a, const uchar* b, size_t aStep, size_t bStep, const ptrdiff_t* offsets,
-                                 int n, int width, int height, unsigned* sums)
+static unsigned rectSadEachCandidate(const uchar* a, const uchar* b, size_t aStep, size_t bStep, const ptrdiff_t* offsets,
+                                     int n, int width, int height, unsigned* sums)
 {
+    static const uchar zeros[32 * DESCRIPTOR_BYTES] = { 0 };
+    CV_DbgAssert(width <= 32);
     for (int i = 0; i < n; i++)
         sums[i] += rectSad(a, b + offsets[i], aStep, bStep, width, height);
+    return rectSad(a, zeros, aStep, 0, width, height);
 }
 
 #ifdef OPENCV_EVENT_X86_KERNELS
@@ -49,18 +53,27 @@ static unsigned rectSadSse2(const uchar* a, const uchar* b, size_t aStep, size_t
     return (unsigned)(_mm_cvtsi128_si32(acc) + _mm_cvtsi128_si32(_mm_unpackhi_epi64(acc, acc)));
 }
 
-// K candidates in one pass over the rectangle: each descriptor of a is loaded once and compared with the K
-// candidates' descriptors, one accumulator (4 x 64-bit lanes) per candidate.
-template <int K>
-__attribute__((target("avx2"))) static inline void rectSadBlockAvx2(const uchar* a, const uchar* b, size_t aStep,
-                                                                   size_t bStep, const ptrdiff_t* offsets, int width,
-                                                                   int height, unsigned* sums)
+// The sum of the four 64-bit lanes (SAD totals fit 32 bits: windows are at most 32 x 32 descriptors).
+__attribute__((target("avx2"))) static inline unsigned sumLanesAvx2(__m256i v)
 {
-    __m256i acc[K];
-    const uchar* pb[K];
+    const __m128i s = _mm_add_epi64(_mm256_castsi256_si128(v), _mm256_extracti128_si256(v, 1));
+    return (unsigned)(_mm_cvtsi128_si32(s) + _mm_cvtsi128_si32(_mm_unpackhi_epi64(s, s)));
+}
+
+// K candidates in one pass over the rectangle: each descriptor of a is loaded once and compared with the K
+// candidates' descriptors, one accumulator (4 x 64-bit lanes) per candidate. With MASS, also the SAD of a
+// against zeros (its mass), returned; K may then be 0.
+template <int K, bool MASS>
+__attribute__((target("avx2"))) static inline unsigned rectSadBlockAvx2(const uchar* a, const uchar* b, size_t aStep,
+                                                                       size_t bStep, const ptrdiff_t* offsets,
+                                                                       int width, int height, unsigned* sums)
+{
+    const __m256i zero = _mm256_setzero_si256();
+    __m256i acc[K > 0 ? K : 1], accMass = zero;
+    const uchar* pb[K > 0 ? K : 1];
     for (int k = 0; k < K; k++)
     {
-        acc[k] = _mm256_setzero_si256();
+        acc[k] = zero;
         pb[k] = b + offsets[k];
     }
     const int bytes = width * DESCRIPTOR_BYTES;
@@ -69,6 +82,8 @@ __attribute__((target("avx2"))) static inline void rectSadBlockAvx2(const uchar*
         for (int x = 0; x < bytes; x += DESCRIPTOR_BYTES)
         {
             const __m256i s = _mm256_loadu_si256((const __m256i*)(a + x));
+            if (MASS)
+                accMass = _mm256_add_epi64(accMass, _mm256_sad_epu8(s, zero));
             for (int k = 0; k < K; k++)
                 acc[k] = _mm256_add_epi64(acc[k], _mm256_sad_epu8(s, _mm256_loadu_si256((const __m256i*)(pb[k] + x))));
         }
@@ -76,36 +91,45 @@ __attribute__((target("avx2"))) static inline void rectSadBlockAvx2(const uchar*
             pb[k] += bStep;
     }
     for (int k = 0; k < K; k++)
-    {
-        const __m128i s = _mm_add_epi64(_mm256_castsi256_si128(acc[k]), _mm256_extracti128_si256(acc[k], 1));
-        sums[k] += (unsigned)(_mm_cvtsi128_si32(s) + _mm_cvtsi128_si32(_mm_unpackhi_epi64(s, s)));
-    }
+        sums[k] += sumLanesAvx2(acc[k]);
+    return MASS ? sumLanesAvx2(accMass) : 0u;
 }
 
-// One rectangle (the window masses): the block with one candidate at offset 0.
+// One rectangle (the other sensor's window masses): the block with one candidate at offset 0.
 __attribute__((target("avx2"))) static unsigned rectSadAvx2(const uchar* a, const uchar* b, size_t aStep, size_t bStep,
                                                             int width, int height)
 {
     const ptrdiff_t offset = 0;
     unsigned sum = 0;
-    rectSadBlockAvx2<1>(a, b, aStep, bStep, &offset, width, height, &sum);
+    rectSadBlockAvx2<1, false>(a, b, aStep, bStep, &offset, width, height, &sum);
     return sum;
 }
 
-__attribute__((target("avx2"))) static void rectSadBatchAvx2(const uchar* a, const uchar* b, size_t aStep, size_t bStep,
-                                                             const ptrdiff_t* offsets, int n, int width, int height,
-                                                             unsigned* sums)
+// The first block also sums the mass, so that a's descriptors are read once for it too.
+__attribute__((target("avx2"))) static unsigned rectSadBatchAvx2(const uchar* a, const uchar* b, size_t aStep,
+                                                                 size_t bStep, const ptrdiff_t* offsets, int n,
+                                                                 int width, int height, unsigned* sums)
 {
-    int i = 0;
+    unsigned mass;
+    int i;
+    if (n >= 4)
+        mass = rectSadBlockAvx2<4, true>(a, b, aStep, bStep, offsets, width, height, sums), i = 4;
+    else if (n >= 2)
+        mass = rectSadBlockAvx2<2, true>(a, b, aStep, bStep, offsets, width, height, sums), i = 2;
+    else if (n == 1)
+        mass = rectSadBlockAvx2<1, true>(a, b, aStep, bStep, offsets, width, height, sums), i = 1;
+    else
+        return rectSadBlockAvx2<0, true>(a, b, aStep, bStep, offsets, width, height, sums);
     for (; i + 4 <= n; i += 4)
-        rectSadBlockAvx2<4>(a, b, aStep, bStep, offsets + i, width, height, sums + i);
+        rectSadBlockAvx2<4, false>(a, b, aStep, bStep, offsets + i, width, height, sums + i);
     if (i + 2 <= n)
     {
-        rectSadBlockAvx2<2>(a, b, aStep, bStep, offsets + i, width, height, sums + i);
+        rectSadBlockAvx2<2, false>(a, b, aStep, bStep, offsets + i, width, height, sums + i);
         i += 2;
     }
     if (i < n)
-        rectSadBlockAvx2<1>(a, b, aStep, bStep, offsets + i, width, height, sums + i);
+        rectSadBlockAvx2<1, false>(a, b, aStep, bStep, offsets + i, width, height, sums + i);
+    return mass;
 }
 
 struct Kernel

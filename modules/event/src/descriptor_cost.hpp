@@ -17,8 +17,9 @@ typedef unsigned (*DescriptorRectSadFn)(const uchar* a, const uchar* b, size_t a
 
 /** For each of @p n candidates i, adds to @p sums[i] the SAD between the rectangle at @p a and the one at
 @p b + @p offsets[i] (bytes), both @p width x @p height descriptors: the same rectangle of one sensor against
-the candidates' rectangles of the other, which share their rows and differ by a shift along them. */
-typedef void (*DescriptorRectSadBatchFn)(const uchar* a, const uchar* b, size_t aStep, size_t bStep,
+the candidates' rectangles of the other, which share their rows and differ by a shift along them. Returns the
+rectangle's mass, its SAD against zeros (the cost of matching it against nothing); @p width is at most 32. */
+typedef unsigned (*DescriptorRectSadBatchFn)(const uchar* a, const uchar* b, size_t aStep, size_t bStep,
                                          const ptrdiff_t* offsets, int n, int width, int height, unsigned* sums);
 
 /** The DescriptorRectSadFn for this CPU, chosen on the first call; the matcher computes its window masses with
@@ -29,8 +30,9 @@ opencv_test_event and opencv_perf_event; not public API.) */
 CV_EXPORTS DescriptorRectSadFn descriptorRectSadFunction();
 
 /** The DescriptorRectSadBatchFn for this CPU, chosen like descriptorRectSadFunction(). The AVX2 version costs
-four candidates per pass over the rectangle: each descriptor of @p a is loaded once for the four. The SSE2 and
-scalar versions call their one-rectangle kernel once per candidate. */
+four candidates per pass over the rectangle: each descriptor of @p a is loaded once for the four, and once for
+the mass, which the first pass sums too. The SSE2 and scalar versions call their one-rectangle kernel once per
+candidate and once against zeros. */
 CV_EXPORTS DescriptorRectSadBatchFn descriptorRectSadBatchFunction();
 
 /** The scalar version: the reference the tests compare the SIMD ones with. */

@@ -481,12 +481,10 @@ private:
     {
         if (!clipToImage(r, x0, x1, y0, y1))
             return 0;
-        const unsigned mass = rectMass(self, r, x0, x1, y0, y1);
         // Candidate i's rectangle is this one shifted by its disparity along the row: offsets_[i] bytes.
-        rectSadBatch_(self.descriptor(r.x + x0, r.y + y0), other.descriptor(r.x + x0, r.y + y0), self.descriptorRowStep(),
-                      other.descriptorRowStep(), offsets_.data(), (int)candidates_.size(), x1 - x0 + 1, y1 - y0 + 1,
-                      cost_.data());
-        return mass;
+        return rectSadBatch_(self.descriptor(r.x + x0, r.y + y0), other.descriptor(r.x + x0, r.y + y0),
+                             self.descriptorRowStep(), other.descriptorRowStep(), offsets_.data(),
+                             (int)candidates_.size(), x1 - x0 + 1, y1 - y0 + 1, cost_.data());
     }
 
     // Clips the rectangle [x0, x1] x [y0, y1] relative to the event's pixel r to the image; false when nothing is

@@ -53,7 +53,7 @@ TEST(Event_DescriptorCost, simd_kernel_equals_scalar_reference)
     EXPECT_EQ(simd(full.data(), zeros.data(), 0, 0, 31, 31), 31u * 31u * 24u * 255u);
 }
 
-TEST(Event_DescriptorCost, batch_kernel_equals_one_rectangle_per_candidate)
+TEST(Event_DescriptorCost, batch_kernel_equals_one_rectangle_per_candidate_and_the_mass)
 {
     RNG rng(12);
     const int stride = 80, rows = 34, bytes = 32;
@@ -61,6 +61,7 @@ TEST(Event_DescriptorCost, batch_kernel_equals_one_rectangle_per_candidate)
     fillSparseDescriptors(rng, 3, a, b);
     const size_t step = (size_t)stride * bytes;
     const DescriptorRectSadBatchFn batch = descriptorRectSadBatchFunction();
+    const std::vector<uchar> zeros((size_t)32 * bytes, 0);  // one row of 32 empty descriptors, step 0
     int checked = 0;
     for (int sign : { -1, 1 })  // the left sensor's candidates lie to the left, the right one's to the right
         for (int n = 0; n <= 11; n++)
@@ -79,9 +80,11 @@ TEST(Event_DescriptorCost, batch_kernel_equals_one_rectangle_per_candidate)
                         expected.push_back(1000u * (unsigned)i + descriptorRectSadScalar(pa, pb + offsets.back(), step, step, w, h));
                         sums.push_back(1000u * (unsigned)i);
                     }
-                    batch(pa, pb, step, step, offsets.data(), n, w, h, sums.data());
+                    const unsigned mass = batch(pa, pb, step, step, offsets.data(), n, w, h, sums.data());
                     ASSERT_EQ(expected, sums) << n << " candidates, " << w << " x " << h << ", sign " << sign << " ("
                                               << descriptorRectSadKernel() << ")";
+                    ASSERT_EQ(descriptorRectSadScalar(pa, zeros.data(), step, 0, w, h), mass)
+                        << "mass, " << n << " candidates, " << w << " x " << h << " (" << descriptorRectSadKernel() << ")";
                     checked++;
                 }
     EXPECT_EQ(checked, 2 * 12 * 5 * 4);
