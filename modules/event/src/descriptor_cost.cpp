@@ -110,16 +110,15 @@ __attribute__((target("avx2"))) static unsigned rectSadBatchAvx2(const uchar* a,
                                                                  size_t bStep, const ptrdiff_t* offsets, int n,
                                                                  int width, int height, unsigned* sums)
 {
-    unsigned mass;
-    int i;
-    if (n >= 4)
-        mass = rectSadBlockAvx2<4, true>(a, b, aStep, bStep, offsets, width, height, sums), i = 4;
-    else if (n >= 2)
-        mass = rectSadBlockAvx2<2, true>(a, b, aStep, bStep, offsets, width, height, sums), i = 2;
-    else if (n == 1)
-        mass = rectSadBlockAvx2<1, true>(a, b, aStep, bStep, offsets, width, height, sums), i = 1;
-    else
-        return rectSadBlockAvx2<0, true>(a, b, aStep, bStep, offsets, width, height, sums);
+    int i = n >= 4 ? 4 : n >= 2 ? 2 : n;  // candidates in the first block
+    unsigned mass = 0;
+    switch (i)
+    {
+    case 4: mass = rectSadBlockAvx2<4, true>(a, b, aStep, bStep, offsets, width, height, sums); break;
+    case 2: mass = rectSadBlockAvx2<2, true>(a, b, aStep, bStep, offsets, width, height, sums); break;
+    case 1: mass = rectSadBlockAvx2<1, true>(a, b, aStep, bStep, offsets, width, height, sums); break;
+    default: return rectSadBlockAvx2<0, true>(a, b, aStep, bStep, offsets, width, height, sums);
+    }
     for (; i + 4 <= n; i += 4)
         rectSadBlockAvx2<4, false>(a, b, aStep, bStep, offsets + i, width, height, sums + i);
     if (i + 2 <= n)

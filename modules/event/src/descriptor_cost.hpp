@@ -22,8 +22,8 @@ rectangle's mass, its SAD against zeros (the cost of matching it against nothing
 typedef unsigned (*DescriptorRectSadBatchFn)(const uchar* a, const uchar* b, size_t aStep, size_t bStep,
                                          const ptrdiff_t* offsets, int n, int width, int height, unsigned* sums);
 
-/** The DescriptorRectSadFn for this CPU, chosen on the first call; the matcher computes its window masses with
-it (against a row of zeros) and fetches it once. The AVX2 version (when the CPU has it) is the batch kernel's
+/** The DescriptorRectSadFn for this CPU, chosen on the first call; the matcher computes the other sensor's
+window masses with it (against a row of zeros) and fetches it once. The AVX2 version (when the CPU has it) is the batch kernel's
 one-candidate block: one 32-byte SAD per descriptor into 64-bit lanes, reduced once per call; the SSE2 one
 does the same with two 16-byte halves; elsewhere the scalar loop. All give the same integers. (Exported for
 opencv_test_event and opencv_perf_event; not public API.) */
