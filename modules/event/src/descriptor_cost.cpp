@@ -95,7 +95,7 @@ __attribute__((target("avx2"))) static inline unsigned rectSadBlockAvx2(const uc
     return MASS ? sumLanesAvx2(accMass) : 0u;
 }
 
-// One rectangle (the other sensor's window masses): the block with one candidate at offset 0.
+// One rectangle against another: the block with one candidate at offset 0.
 __attribute__((target("avx2"))) static unsigned rectSadAvx2(const uchar* a, const uchar* b, size_t aStep, size_t bStep,
                                                             int width, int height)
 {

@@ -18,14 +18,15 @@ typedef unsigned (*DescriptorRectSadFn)(const uchar* a, const uchar* b, size_t a
 /** For each of @p n candidates i, adds to @p sums[i] the SAD between the rectangle at @p a and the one at
 @p b + @p offsets[i] (bytes), both @p width x @p height descriptors: the same rectangle of one sensor against
 the candidates' rectangles of the other, which share their rows and differ by a shift along them. Returns the
-rectangle's mass, its SAD against zeros (the cost of matching it against nothing); @p width is at most 32. */
+rectangle's mass, its SAD against zeros (the cost of matching it against nothing); @p width is at most 32.
+With @p n = 0 only the mass is computed, and @p b, @p offsets and @p sums are not read. */
 typedef unsigned (*DescriptorRectSadBatchFn)(const uchar* a, const uchar* b, size_t aStep, size_t bStep,
                                          const ptrdiff_t* offsets, int n, int width, int height, unsigned* sums);
 
-/** The DescriptorRectSadFn for this CPU, chosen on the first call; the matcher computes the other sensor's
-window masses with it (against a row of zeros) and fetches it once. The AVX2 version (when the CPU has it) is the batch kernel's
-one-candidate block: one 32-byte SAD per descriptor into 64-bit lanes, reduced once per call; the SSE2 one
-does the same with two 16-byte halves; elsewhere the scalar loop. All give the same integers. (Exported for
+/** The DescriptorRectSadFn for this CPU, chosen on the first call: the one-rectangle kernel the SSE2 and
+scalar batch kernels are built from (the matcher itself calls the batch kernel only). The AVX2 version (when
+the CPU has it) is the batch kernel's one-candidate block: one 32-byte SAD per descriptor into 64-bit lanes,
+reduced once per call; the SSE2 one does the same with two 16-byte halves; elsewhere the scalar loop. All give the same integers. (Exported for
 opencv_test_event and opencv_perf_event; not public API.) */
 CV_EXPORTS DescriptorRectSadFn descriptorRectSadFunction();
 

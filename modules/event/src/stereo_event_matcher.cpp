@@ -503,10 +503,9 @@ private:
     // Sum of the descriptor values over [x0, x1] x [y0, y1] relative to q: the cost of matching against nothing.
     unsigned rectMass(const ZouDescriptorMap& map, Point q, int x0, int x1, int y0, int y1) const
     {
-        // Against one row of zero descriptors, used for every row (step 0); windows are at most 31 wide.
-        static const uchar zeros[32 * ZouDescriptorMap::DESCRIPTOR_BYTES] = { 0 };
-        CV_DbgAssert(x1 - x0 < 32);
-        return rectSad_(map.descriptor(q.x + x0, q.y + y0), zeros, map.descriptorRowStep(), 0, x1 - x0 + 1, y1 - y0 + 1);
+        // The batch kernel without candidates: it returns the rectangle's mass alone.
+        return rectSadBatch_(map.descriptor(q.x + x0, q.y + y0), nullptr, map.descriptorRowStep(), 0, nullptr, 0,
+                             x1 - x0 + 1, y1 - y0 + 1, nullptr);
     }
 
     MatchResult match(int c, Point r, int p)
@@ -726,8 +725,7 @@ private:
     std::vector<PixelEstimate> lastEstimate_[2];
     int64 lastTime_ = std::numeric_limits<int64>::min();
     int64 coldStartEnd_ = 0;  // the end of the cold start: see admit()
-    // The cost kernels for this CPU, fetched once.
-    DescriptorRectSadFn rectSad_ = descriptorRectSadFunction();
+    // The cost kernel for this CPU (candidates' costs and window masses), fetched once.
     DescriptorRectSadBatchFn rectSadBatch_ = descriptorRectSadBatchFunction();
     // The current event's candidates: disparity index (disparity - min) in increasing order, byte offset of the
     // other sensor's descriptor from the event's column, and cost.
