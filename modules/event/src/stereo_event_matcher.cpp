@@ -138,7 +138,11 @@ public:
         if (mode_ == STEREO_FIXED_INTERVAL)
             activeFor = fixedInterval_;
         else if (est.lifetime > 0)
-            activeFor = std::max<int64>(1, std::min<int64>((int64)std::llround(est.lifetime), maxLifetime_));
+        {
+            // Active until the edge has moved activeDistance_ pixels (the lifetime is the time per pixel).
+            const double span = std::min((double)est.lifetime * activeDistance_, (double)maxLifetime_);
+            activeFor = std::max<int64>(1, (int64)std::llround(span));
+        }
         else if (e.t < coldStartEnd_)
         {
             // Cold start: during the plane fit's first time window the surface cannot hold the history a fit
@@ -349,6 +353,14 @@ public:
     }
     double getMaxLifetime() const CV_OVERRIDE { return (double)maxLifetime_; }
     void setMaxLifetime(double us) CV_OVERRIDE { maxLifetime_ = duration(us, "max lifetime"); }
+    double getActiveDistance() const CV_OVERRIDE { return activeDistance_; }
+    void setActiveDistance(double px) CV_OVERRIDE
+    {
+        if (!(px >= 0.1 && px <= 100))
+            CV_Error_(Error::StsBadArg, ("StereoEventMatcher: active distance %g px; must be 0.1..100 px (1: active "
+                                         "for one lifetime, as in the paper)", px));
+        activeDistance_ = px;
+    }
 
     void write(FileStorage& fs) const CV_OVERRIDE
     {
@@ -357,7 +369,8 @@ public:
            << "minDisparity" << minDisparity_ << "maxDisparity" << maxDisparity_ << "descriptorWindow" << descriptorWindow_
            << "maxVectorLength" << maxVectorLength_ << "costWindow" << costWindow_ << "aggregationWindow"
            << aggregationWindow_ << "uniquenessRatio" << uniquenessRatio_ << "fixedInterval" << (double)fixedInterval_
-           << "frameWindow" << (double)frameWindow_ << "maxLifetime" << (double)maxLifetime_;
+           << "frameWindow" << (double)frameWindow_ << "maxLifetime" << (double)maxLifetime_ << "activeDistance"
+           << activeDistance_;
         fs << "lifetimeEstimator" << "{";
         estimators_[0]->write(fs);
         fs << "}";
@@ -392,6 +405,7 @@ public:
         setFixedInterval(num("fixedInterval", (double)fixedInterval_));
         setFrameWindow(num("frameWindow", (double)frameWindow_));
         setMaxLifetime(num("maxLifetime", (double)maxLifetime_));
+        setActiveDistance(num("activeDistance", activeDistance_));
         if (!fn["lifetimeEstimator"].empty())
             for (const Ptr<LifetimeEstimator>& est : estimators_)
                 est->read(fn["lifetimeEstimator"]);
@@ -716,6 +730,7 @@ private:
     int minDisparity_ = 0, maxDisparity_ = 40;
     int descriptorWindow_ = 3, maxVectorLength_ = 3, costWindow_ = 9, aggregationWindow_ = 17, uniquenessRatio_ = 25;
     int64 fixedInterval_ = 10000, frameWindow_ = 33000, maxLifetime_ = 100000;
+    double activeDistance_ = 2.5;
     StereoCalibration calibration_;
     std::vector<int> lut_[2];  // raw pixel -> rectified pixel index (-1: outside); empty: no calibration
     double focalBaseline_ = 0;

@@ -84,6 +84,13 @@ event is flagged ambiguous and gets no disparity rather than a wrong one.
   EventCapture with EVENT_CAP_PROP_WINDOW_US = the frame window) gives exactly that; a window split over
   several calls is computed from the events seen so far. processEvent() is not available in this mode.
 
+**Activity** (COUPLED, DECOUPLED): an event with a lifetime stays active for getActiveDistance() lifetimes
+(2.5 by default; the paper has 1), so each edge leaves a trail of 2.5 px in the descriptors. Measured on
+the simulator against 1 (density / within 1 px, 264 ms): plane 98.7 / 99.96 -> 99.0 / 99.97 %, two_planes
+92.4 / 99.66 -> 93.9 / 99.72 %, cluttered 78.3 / 97.7 -> 80.6 / 97.8 %; over 1 s cluttered 83.9 -> 85.8 %
+at 98.7 -> 98.6 %, two_planes level (94.7 -> 94.5 %); the weak sensor of `faint_line` keeps more lifetimes
+(1,486 -> 1,525). Set 1 for the paper's method as published.
+
 **Cold start** (COUPLED, DECOUPLED): for one time window of the plane fit after the first event (after
 create() or reset(), or after a gap in the stream longer than that window), the surface cannot yet hold the
 history a fit needs. An event that gets no lifetime then is kept active for getFixedInterval(), without a
@@ -170,6 +177,13 @@ public:
     how long a slow or wrong estimate pollutes the descriptors. */
     CV_WRAP virtual double getMaxLifetime() const = 0;
     CV_WRAP virtual void setMaxLifetime(double us) = 0;
+    /** @brief COUPLED, DECOUPLED: how far [px] an event's edge moves while the event stays active for
+    matching, i.e. for how many lifetimes (the lifetime is the time the edge takes to move one pixel), up to
+    getMaxLifetime() (default 2.5; 0.1..100). The paper's "active within its lifetime" is 1. A trail of a
+    few pixels gives the descriptors more of each edge to match: see the class description for what 2.5
+    measured against 1. The lifetimes output are not scaled. */
+    CV_WRAP virtual double getActiveDistance() const = 0;
+    CV_WRAP virtual void setActiveDistance(double px) = 0;
 };
 
 /** @brief "coupled", "decoupled", "fixed" or "sgbm" for a StereoMatchMode. */
