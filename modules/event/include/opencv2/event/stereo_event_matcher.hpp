@@ -173,8 +173,9 @@ public:
     /** @brief FRAME_SGBM: accumulation window [us] (default 33000). */
     CV_WRAP virtual double getFrameWindow() const = 0;
     CV_WRAP virtual void setFrameWindow(double us) = 0;
-    /** @brief Longest lifetime an event may keep active [us] (default 100000, the plane fit's dt): bounds
-    how long a slow or wrong estimate pollutes the descriptors. */
+    /** @brief Longest time an event with a lifetime stays active [us] (default 100000, the plane fit's dt),
+    whatever its lifetime and getActiveDistance(): bounds how long a slow or wrong estimate pollutes the
+    descriptors. */
     CV_WRAP virtual double getMaxLifetime() const = 0;
     CV_WRAP virtual void setMaxLifetime(double us) = 0;
     /** @brief COUPLED, DECOUPLED: how far [px] an event's edge moves while the event stays active for
