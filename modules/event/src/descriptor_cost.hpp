@@ -26,8 +26,8 @@ typedef unsigned (*DescriptorRectSadBatchFn)(const uchar* a, const uchar* b, siz
 /** The DescriptorRectSadFn for this CPU, chosen on the first call: the one-rectangle kernel the SSE2 and
 scalar batch kernels are built from (the matcher itself calls the batch kernel only). The AVX2 version (when
 the CPU has it) is the batch kernel's one-candidate block: one 32-byte SAD per descriptor into 64-bit lanes,
-reduced once per call; the SSE2 one does the same with two 16-byte halves; elsewhere the scalar loop. All give the same integers. (Exported for
-opencv_test_event and opencv_perf_event; not public API.) */
+reduced once per call; the SSE2 one does the same with two 16-byte halves; elsewhere the scalar loop. All
+give the same integers. (Exported for opencv_test_event and opencv_perf_event; not public API.) */
 CV_EXPORTS DescriptorRectSadFn descriptorRectSadFunction();
 
 /** The DescriptorRectSadBatchFn for this CPU, chosen like descriptorRectSadFunction(). The AVX2 version costs
