@@ -138,18 +138,15 @@ public:
         if (mode_ == STEREO_FIXED_INTERVAL)
             activeFor = fixedInterval_;
         else if (est.lifetime > 0)
-        {
-            // Active until the edge has moved activeDistance_ pixels (the lifetime is the time per pixel).
-            const double span = std::min((double)est.lifetime * activeDistance_, (double)maxLifetime_);
-            activeFor = std::max<int64>(1, (int64)std::llround(span));
-        }
+            activeFor = activeSpan(est.lifetime);
         else if (e.t < coldStartEnd_)
         {
             // Cold start: during the plane fit's first time window the surface cannot hold the history a fit
             // needs, so a scene's first edges fail it for want of neighbours, not for being noise, and without
-            // them neither sensor has anything active to match against. Such an event is kept visible to
-            // matching for the fixed interval (as in FIXED_INTERVAL) but gets no lifetime of its own.
-            activeFor = fixedInterval_;
+            // them neither sensor has anything active to match against. Such an event gets no lifetime of its
+            // own but stays visible to matching as if its lifetime were the fixed interval (FIXED_INTERVAL's
+            // activity, which needs no history).
+            activeFor = activeSpan(fixedInterval_);
         }
         if (activeFor > 0)
             maps_[c].activate(r.x, r.y, p, timeAfter(e.t, activeFor), est.lifetime, est.flow);
@@ -633,6 +630,14 @@ private:
         const size_t mid = disparities_.size() / 2;
         std::nth_element(disparities_.begin(), disparities_.begin() + (std::ptrdiff_t)mid, disparities_.end());
         return std::abs(disparities_[mid] - d) <= 1.0;
+    }
+
+    // How long an event with this lifetime (us per pixel) stays active: until its edge has moved
+    // activeDistance_ pixels, at most maxLifetime_.
+    int64 activeSpan(double lifetime) const
+    {
+        const double span = std::min(lifetime * activeDistance_, (double)maxLifetime_);
+        return std::max<int64>(1, (int64)std::llround(span));
     }
 
     // Median lifetime (and the flow of that event) of the active events of polarity p in the cost window

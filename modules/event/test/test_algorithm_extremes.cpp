@@ -155,10 +155,10 @@ TEST(Event_Extremes, all_events_at_one_pixel)
 
     // Stereo: the left pixel (20, 10) and the right pixel (14, 10) fire together, every 100 us for 300 ms.
     // With a fixed activity interval the only candidate with structure is d = 6. With lifetimes no event gets
-    // one (all noise): only the cold start (the plane fit's first 100 ms) keeps them active for the fixed
-    // interval, so they match there and never after it (+ the 10 ms the last of them stays active).
+    // one (all noise): only the cold start (the plane fit's first 100 ms) keeps them active, for 2.5 fixed
+    // intervals, so they match there and never after it (+ the 25 ms the last of them stays active).
     std::vector<Event> stereo;
-    const int64 firstTime = 1000, coldEnd = firstTime + 100000 + 10000;
+    const int64 firstTime = 1000, coldEnd = firstTime + 100000 + 25000;
     for (int i = 0; i < 3000; i++)
     {
         stereo.push_back(Event(firstTime + 100 * i, 20, 10, POLARITY_ON, CAMERA_LEFT));

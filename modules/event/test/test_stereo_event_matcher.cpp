@@ -145,7 +145,8 @@ TEST(StereoEventMatcher, textured_scenes_meet_the_accuracy_and_density_targets)
 // without help the lifetime modes see nothing active in the other sensor and estimate far fewer events than
 // FIXED_INTERVAL, which needs no history. Measured over the first 99 ms before the cold-start rule (COUPLED /
 // FIXED_INTERVAL density): plane 94.1 / 98.9 %, two_planes 80.3 / 91.1 %, cluttered 60.3 / 69.8 %; after:
-// 97.8, 90.3 and 72.3 % (DECOUPLED 98.8, 91.8, 72.8 %).
+// 97.8, 90.3 and 72.3 % (DECOUPLED 98.8, 91.8, 72.8 %); with events active for 2.5 lifetimes and the cold
+// start's events for 2.5 fixed intervals: 98.4, 93.8 and 76.9 % (DECOUPLED 98.9, 95.3, 78.5 %).
 TEST(StereoEventMatcher, lifetime_modes_estimate_as_many_events_as_fixed_interval_from_the_start)
 {
     for (const char* scene : { "plane", "two_planes", "cluttered" })
@@ -174,23 +175,30 @@ TEST(StereoEventMatcher, events_at_the_outer_border_keep_their_disparity)
     EXPECT_GE(a.density, 90.0);
 }
 
-// What users do today (frames + SGBM), on the fronto-parallel plane and the occlusion scene: COUPLED
-// estimates more events (higher density), gets at least 5 points more of all non-occluded events right
-// (within 1 px), and its estimates are as precise: the share within 1 px no more than 0.15 points below
-// SGBM's. Measured at 264 ms: plane 99.97 % against 99.99 % (it was 99.78 % before a winner had to beat
-// "no counterpart" by the uniqueness margin, 99.92 % before the cold start, 99.96 % with an active distance
-// of 1 px), two_planes 99.7 % against 99.2 %.
+// What users do today (frames + SGBM), on the three textured scenes: COUPLED estimates more events (higher
+// density), gets more of all non-occluded events right (within 1 px; by at least 5 points on the
+// fronto-parallel plane and the occlusion scene, where SGBM's frames lose most), and its estimates are as
+// precise: the share within 1 px no more than 0.15 points below SGBM's. Measured at 264 ms (density /
+// within 1 px, COUPLED against SGBM): plane 99.0 / 99.96 % against 86.9 / 99.9997 % (within 1 px it was
+// 99.78 % before a winner had to beat "no counterpart" by the uniqueness margin, 99.92 % before the cold
+// start), two_planes 94.2 / 99.75 % against 79.2 / 99.20 %, cluttered 81.1 / 98.08 % against 80.65 /
+// 96.81 % (80.6 % density, level with SGBM, while the cold start's events were active for one fixed
+// interval).
 TEST(StereoEventMatcher, coupled_beats_frame_sgbm_on_textured_scenes)
 {
-    for (const char* scene : { "plane", "two_planes" })
+    const struct { const char* scene; double morePointsRight; } scenes[] = {
+        { "plane", 5 }, { "two_planes", 5 }, { "cluttered", 1 }
+    };
+    for (const auto& s : scenes)
     {
-        const Accuracy coupled = simulate(scene, STEREO_COUPLED, 264);
-        const Accuracy sgbm = simulate(scene, STEREO_FRAME_SGBM, 264);
-        std::cout << scene << ": coupled: density " << coupled.density << " %, within 1 px " << coupled.within1
+        const Accuracy coupled = simulate(s.scene, STEREO_COUPLED, 264);
+        const Accuracy sgbm = simulate(s.scene, STEREO_FRAME_SGBM, 264);
+        std::cout << s.scene << ": coupled: density " << coupled.density << " %, within 1 px " << coupled.within1
                   << " %; sgbm: density " << sgbm.density << " %, within 1 px " << sgbm.within1 << " %" << std::endl;
-        EXPECT_GE(coupled.density, sgbm.density) << scene;
-        EXPECT_GE(coupled.density * coupled.within1 / 100, sgbm.density * sgbm.within1 / 100 + 5) << scene;
-        EXPECT_GE(coupled.within1, sgbm.within1 - 0.15) << scene;
+        EXPECT_GE(coupled.density, sgbm.density) << s.scene;
+        EXPECT_GE(coupled.density * coupled.within1 / 100, sgbm.density * sgbm.within1 / 100 + s.morePointsRight)
+            << s.scene;
+        EXPECT_GE(coupled.within1, sgbm.within1 - 0.15) << s.scene;
     }
 }
 

@@ -93,9 +93,10 @@ at 98.7 -> 98.6 %, two_planes level (94.7 -> 94.5 %); the weak sensor of `faint_
 
 **Cold start** (COUPLED, DECOUPLED): for one time window of the plane fit after the first event (after
 create() or reset(), or after a gap in the stream longer than that window), the surface cannot yet hold the
-history a fit needs. An event that gets no lifetime then is kept active for getFixedInterval(), without a
-lifetime of its own, so that both sensors have something to match against from the start; afterwards such
-an event is inactive, as the paper has it.
+history a fit needs. An event that gets no lifetime then stays active as if getFixedInterval() were its
+lifetime (for getActiveDistance() fixed intervals, 25 ms at the defaults), without a lifetime of its own,
+so that both sensors have something to match against from the start; afterwards such an event is
+inactive, as the paper has it.
 
 Memory is O(sensor pixels): the per-pixel maps, an expiry heap over pixels and the two LifetimeEstimators.
 */
@@ -167,7 +168,7 @@ public:
     CV_WRAP virtual int getUniquenessRatio() const = 0;
     CV_WRAP virtual void setUniquenessRatio(int ratio) = 0;
     /** @brief FIXED_INTERVAL: how long every event stays active [us] (default 10000); in the other per-event
-    modes, how long an event without a lifetime stays active during the cold start. */
+    modes, the lifetime an event without one is taken to have for its activity during the cold start. */
     CV_WRAP virtual double getFixedInterval() const = 0;
     CV_WRAP virtual void setFixedInterval(double us) = 0;
     /** @brief FRAME_SGBM: accumulation window [us] (default 33000). */
