@@ -10,7 +10,8 @@
 // disparity_NNNNN.png every --frame-ms (left | right active events coloured by disparity, the paper's
 // Figure 1; plus the ground truth below when simulated), disparity.avi when a video writer is available,
 // disparity_histogram.png and summary.md (events/s, share with disparity and with lifetime, dominant
-// disparity, and errors against the ground truth when simulated). Progress goes to stderr.
+// disparity, input events outside the sensor or going back in time, and errors against the ground truth
+// when simulated). Progress goes to stderr.
 
 #include <opencv2/event.hpp>
 #include <opencv2/core/utils/filesystem.hpp>  // after a core header: it needs CV_EXPORTS
@@ -132,6 +133,11 @@ public:
         windowEnd = cap_.get(EVENT_CAP_PROP_POS_US);
         return true;
     }
+
+    // Input events the capture did not deliver (outside the sensor) and events that went back in time
+    // (delivered with the previous timestamp): both are counted, never silent.
+    double rejectedOutside() const { return sim_ ? 0 : cap_.get(EVENT_CAP_PROP_REJECTED_OUTSIDE); }
+    double timeBackwards() const { return sim_ ? 0 : cap_.get(EVENT_CAP_PROP_TIME_BACKWARDS); }
 
     // 0..1, or -1 when unknown (live).
     double progress() const
@@ -298,6 +304,9 @@ int main(int argc, char** argv)
                 dominant = opt.minDisparity + (int)k;
             }
         imwrite(opt.output + "/disparity_histogram.png", histogramPicture(histogram, opt.minDisparity));
+        if (source.rejectedOutside() > 0)
+            std::cerr << "event_stereo: warning: " << (int64)source.rejectedOutside() << " input events lie outside the "
+                      << size.width << " x " << size.height << " sensor and were not processed (--sensor WxH sets the size)\n";
         auto pct = [](int64 a, int64 b) { return b ? 100.0 * (double)a / (double)b : 0.0; };
         std::ostringstream text;
         text << "# event_stereo summary\n\n| | |\n|---|---|\n"
@@ -305,6 +314,8 @@ int main(int argc, char** argv)
              << "| sensor | " << size.width << " x " << size.height << (opt.calib.empty() ? "" : ", calibration " + opt.calib) << " |\n"
              << "| mode | " << opt.mode << ", disparities " << opt.minDisparity << ".." << opt.maxDisparity << " px |\n"
              << "| events | " << events << " (left " << perCamera[0] << ", right " << perCamera[1] << ") |\n"
+             << "| input events outside the sensor (not processed) / going back in time (clamped) | "
+             << (int64)source.rejectedOutside() << " / " << (int64)source.timeBackwards() << " |\n"
              << "| processing | " << seconds << " s, " << (double)events / std::max(1e-9, seconds) / 1e6 << " Mev/s |\n"
              << "| events with a disparity | " << pct(withDisparity[0] + withDisparity[1], events) << " % (left "
              << pct(withDisparity[0], perCamera[0]) << " %, right " << pct(withDisparity[1], perCamera[1]) << " %) |\n"

@@ -1,7 +1,9 @@
 # ctests `event_stereo_*` and `stereo_overview_*`: runs a stereo sample and checks its summary.md: the
 # dominant disparity against the known value (simulated: f * B / Z of the foreground plane; TUM Fan: 8 px,
-# shared/data/README.md); optionally the ground-truth accuracy (MIN_WITHIN1 % of estimates within 1 px,
-# MIN_DENSITY %); and that the files REQUIRED_FILES names were written.
+# shared/data/README.md) within DISPARITY_TOLERANCE px (default 1); optionally the ground-truth accuracy
+# (MIN_WITHIN1 % of estimates within 1 px, MIN_DENSITY %); optionally that every one of the file's
+# INPUT_EVENTS events is accounted for (processed, or reported as outside the sensor); and that the files
+# REQUIRED_FILES names were written.
 foreach(v SAMPLE OUTPUT_DIR EXPECTED_DISPARITY REQUIRED_FILES)
   if(NOT DEFINED ${v})
     message(FATAL_ERROR "stereo_sample.cmake: ${v} not set")
@@ -27,9 +29,26 @@ if(NOT summary MATCHES "dominant disparity[^|]*\\| ([0-9-]+) px")
   message(FATAL_ERROR "no dominant disparity in summary.md")
 endif()
 set(d "${CMAKE_MATCH_1}")
+if(NOT DEFINED DISPARITY_TOLERANCE)
+  set(DISPARITY_TOLERANCE 1)
+endif()
 math(EXPR diff "${d} - ${EXPECTED_DISPARITY}")
-if(diff GREATER 1 OR diff LESS -1)
-  message(FATAL_ERROR "dominant disparity ${d} px, expected ${EXPECTED_DISPARITY} +/- 1 px")
+if(diff GREATER DISPARITY_TOLERANCE OR diff LESS -${DISPARITY_TOLERANCE})
+  message(FATAL_ERROR "dominant disparity ${d} px, expected ${EXPECTED_DISPARITY} +/- ${DISPARITY_TOLERANCE} px")
+endif()
+if(DEFINED INPUT_EVENTS)
+  string(REGEX MATCH "\\| events \\| ([0-9]+) " _ "${summary}")
+  set(processed "${CMAKE_MATCH_1}")
+  string(REGEX MATCH "outside the sensor[^|]*\\| ([0-9]+) /" _ "${summary}")
+  set(outside "${CMAKE_MATCH_1}")
+  if(processed STREQUAL "" OR outside STREQUAL "")
+    message(FATAL_ERROR "no event counts (processed, outside the sensor) in summary.md")
+  endif()
+  math(EXPR total "${processed} + ${outside}")
+  if(NOT total EQUAL INPUT_EVENTS)
+    message(FATAL_ERROR "${processed} events processed + ${outside} outside the sensor = ${total}, the file has ${INPUT_EVENTS}")
+  endif()
+  message("${processed} events processed, ${outside} outside the sensor: all ${INPUT_EVENTS} accounted for")
 endif()
 foreach(check "within 1 px;MIN_WITHIN1" "density \\(estimated / non-occluded signal\\);MIN_DENSITY")
   list(GET check 0 label)

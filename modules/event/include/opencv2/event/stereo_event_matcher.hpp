@@ -86,7 +86,7 @@ event is flagged ambiguous and gets no disparity rather than a wrong one.
 
 **Activity** (COUPLED, DECOUPLED): an event with a lifetime stays active for getActiveDistance() lifetimes
 (2.5 by default; the paper has 1), so each edge leaves a trail of 2.5 px in the descriptors. Measured on
-the simulator against 1 (density / within 1 px, 264 ms): plane 98.7 / 99.96 -> 99.0 / 99.97 %, two_planes
+the simulator against 1 (density / within 1 px, 264 ms, uniqueness ratio 25 %): plane 98.7 / 99.96 -> 99.0 / 99.97 %, two_planes
 92.4 / 99.66 -> 93.9 / 99.72 %, cluttered 78.3 / 97.7 -> 80.6 / 97.8 %; over 1 s cluttered 83.9 -> 85.8 %
 at 98.7 -> 98.6 %, two_planes level (94.7 -> 94.5 %); the weak sensor of `faint_line` keeps more lifetimes
 (1,486 -> 1,525). Set 1 for the paper's method as published.
@@ -164,7 +164,8 @@ public:
     /** @brief A, the side of the largest window the iterative aggregation grows to (odd, >= W, default 17). */
     CV_WRAP virtual int getAggregationWindow() const = 0;
     CV_WRAP virtual void setAggregationWindow(int a) = 0;
-    /** @brief Margin [%] by which the best cost must beat every other candidate and "no counterpart" (default 25). */
+    /** @brief Margin [%] by which the best cost must beat every other candidate and "no counterpart" (default 15;
+    higher trades density for precision: see doc/stereo.md for the sweep on the simulator and the TUM pairs). */
     CV_WRAP virtual int getUniquenessRatio() const = 0;
     CV_WRAP virtual void setUniquenessRatio(int ratio) = 0;
     /** @brief FIXED_INTERVAL: how long every event stays active [us] (default 10000); in the other per-event
