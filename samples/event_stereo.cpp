@@ -305,8 +305,9 @@ int main(int argc, char** argv)
             }
         imwrite(opt.output + "/disparity_histogram.png", histogramPicture(histogram, opt.minDisparity));
         if (source.rejectedOutside() > 0)
-            std::cerr << "event_stereo: warning: " << (int64)source.rejectedOutside() << " input events lie outside the "
-                      << size.width << " x " << size.height << " sensor and were not processed (--sensor WxH sets the size)\n";
+            std::cerr << "event_stereo: warning: " << (int64)source.rejectedOutside()
+                      << " input events lie outside the " << size.width << " x " << size.height
+                      << " sensor and were not processed (--sensor WxH sets the size)\n";
         auto pct = [](int64 a, int64 b) { return b ? 100.0 * (double)a / (double)b : 0.0; };
         std::ostringstream text;
         text << "# event_stereo summary\n\n| | |\n|---|---|\n"

@@ -4,6 +4,7 @@
 
 #include "precomp.hpp"
 #include "descriptor_cost.hpp"
+#include "zou_descriptor_map.hpp"
 
 #if (defined(__x86_64__) || defined(__i386__)) && defined(__GNUC__)
 #include <immintrin.h>
@@ -13,7 +14,11 @@
 namespace cv {
 namespace event {
 
-enum { DESCRIPTOR_BYTES = 32 };
+// Descriptors are packed (24 bytes each, no padding). A SAD over a rectangle is a sum over its bytes, whatever
+// descriptor each byte belongs to, so each row of the rectangle is one run of width x 24 bytes, taken in
+// 32-byte (AVX2) or 16-byte (SSE2) chunks with a shorter tail: 24 bytes is a multiple of 8, so the tail is
+// 8, 16 or 24 bytes and is loaded in 64-bit lanes, never past the rectangle.
+enum { DESCRIPTOR_BYTES = ZouDescriptorMap::DESCRIPTOR_BYTES };
 
 unsigned descriptorRectSadScalar(const uchar* a, const uchar* b, size_t aStep, size_t bStep, int width, int height)
 {
@@ -42,14 +47,16 @@ static unsigned rectSadEachCandidate(const uchar* a, const uchar* b, size_t aSte
 static unsigned rectSadSse2(const uchar* a, const uchar* b, size_t aStep, size_t bStep, int width, int height)
 {
     __m128i acc = _mm_setzero_si128();
+    const int bytes = width * DESCRIPTOR_BYTES, full = bytes & ~15;
     for (int y = 0; y < height; y++, a += aStep, b += bStep)
-        for (int x = 0; x < width * DESCRIPTOR_BYTES; x += DESCRIPTOR_BYTES)
-        {
-            const __m128i lo = _mm_sad_epu8(_mm_loadu_si128((const __m128i*)(a + x)), _mm_loadu_si128((const __m128i*)(b + x)));
-            const __m128i hi = _mm_sad_epu8(_mm_loadu_si128((const __m128i*)(a + x + 16)),
-                                            _mm_loadu_si128((const __m128i*)(b + x + 16)));
-            acc = _mm_add_epi64(acc, _mm_add_epi64(lo, hi));
-        }
+    {
+        for (int x = 0; x < full; x += 16)
+            acc = _mm_add_epi64(acc, _mm_sad_epu8(_mm_loadu_si128((const __m128i*)(a + x)),
+                                                  _mm_loadu_si128((const __m128i*)(b + x))));
+        if (full < bytes)  // 8 bytes left
+            acc = _mm_add_epi64(acc, _mm_sad_epu8(_mm_loadl_epi64((const __m128i*)(a + full)),
+                                                  _mm_loadl_epi64((const __m128i*)(b + full))));
+    }
     return (unsigned)(_mm_cvtsi128_si32(acc) + _mm_cvtsi128_si32(_mm_unpackhi_epi64(acc, acc)));
 }
 
@@ -76,16 +83,28 @@ __attribute__((target("avx2"))) static inline unsigned rectSadBlockAvx2(const uc
         acc[k] = zero;
         pb[k] = b + offsets[k];
     }
-    const int bytes = width * DESCRIPTOR_BYTES;
+    const int bytes = width * DESCRIPTOR_BYTES, full = bytes & ~31;
+    // The tail's 64-bit lanes: 1, 2 or 3 of the 4 (none when the row is a multiple of 32 bytes).
+    const __m256i tail = _mm256_cmpgt_epi64(_mm256_set1_epi64x((bytes - full) / 8), _mm256_setr_epi64x(0, 1, 2, 3));
     for (int y = 0; y < height; y++, a += aStep)
     {
-        for (int x = 0; x < bytes; x += DESCRIPTOR_BYTES)
+        for (int x = 0; x < full; x += 32)
         {
             const __m256i s = _mm256_loadu_si256((const __m256i*)(a + x));
             if (MASS)
                 accMass = _mm256_add_epi64(accMass, _mm256_sad_epu8(s, zero));
             for (int k = 0; k < K; k++)
                 acc[k] = _mm256_add_epi64(acc[k], _mm256_sad_epu8(s, _mm256_loadu_si256((const __m256i*)(pb[k] + x))));
+        }
+        if (full < bytes)
+        {
+            // Masked-off lanes read as zero on both sides and are not accessed.
+            const __m256i s = _mm256_maskload_epi64((const long long*)(a + full), tail);
+            if (MASS)
+                accMass = _mm256_add_epi64(accMass, _mm256_sad_epu8(s, zero));
+            for (int k = 0; k < K; k++)
+                acc[k] = _mm256_add_epi64(
+                    acc[k], _mm256_sad_epu8(s, _mm256_maskload_epi64((const long long*)(pb[k] + full), tail)));
         }
         for (int k = 0; k < K; k++)
             pb[k] += bStep;

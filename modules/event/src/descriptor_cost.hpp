@@ -10,9 +10,9 @@
 namespace cv {
 namespace event {
 
-/** Sum of absolute differences between two rectangles of 32-byte descriptors (ZouDescriptorMap layout:
-24 counts, then 8 zero bytes), @p width x @p height descriptors; rows are @p aStep / @p bStep bytes apart
-(a step of 0 reuses one row, e.g. a row of zeros). */
+/** Sum of absolute differences between two rectangles of descriptors (ZouDescriptorMap layout: 24 counts
+per descriptor, packed), @p width x @p height descriptors; rows are @p aStep / @p bStep bytes apart (a step
+of 0 reuses one row, e.g. a row of zeros). */
 typedef unsigned (*DescriptorRectSadFn)(const uchar* a, const uchar* b, size_t aStep, size_t bStep, int width, int height);
 
 /** For each of @p n candidates i, adds to @p sums[i] the SAD between the rectangle at @p a and the one at
@@ -25,9 +25,9 @@ typedef unsigned (*DescriptorRectSadBatchFn)(const uchar* a, const uchar* b, siz
 
 /** The DescriptorRectSadFn for this CPU, chosen on the first call: the one-rectangle kernel the SSE2 and
 scalar batch kernels are built from (the matcher itself calls the batch kernel only). The AVX2 version (when
-the CPU has it) is the batch kernel's one-candidate block: one 32-byte SAD per descriptor into 64-bit lanes,
-reduced once per call; the SSE2 one does the same with two 16-byte halves; elsewhere the scalar loop. All
-give the same integers. (Exported for opencv_test_event and opencv_perf_event; not public API.) */
+the CPU has it) is the batch kernel's one-candidate block: each row of the rectangle in 32-byte SADs into
+64-bit lanes, reduced once per call; the SSE2 one does the same in 16-byte SADs; elsewhere the scalar loop.
+All give the same integers. (Exported for opencv_test_event and opencv_perf_event; not public API.) */
 CV_EXPORTS DescriptorRectSadFn descriptorRectSadFunction();
 
 /** The DescriptorRectSadBatchFn for this CPU, chosen like descriptorRectSadFunction(). The AVX2 version costs

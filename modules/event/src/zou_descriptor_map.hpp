@@ -17,9 +17,10 @@ namespace event {
 Per pixel and polarity: whether an event is active there (with its time, lifetime and flow), and the
 vector to the nearest active event of that polarity within the maximum vector length, stored as an index
 into a table of offsets sorted by length (ties by angle), so "nearest" is "smallest index".
-Per pixel: the descriptor, 12 orientation bins of 30 degrees per polarity (bytes 0..11 OFF, 12..23 ON,
-24..31 zero so two 16-byte loads cover it), counting the vectors of the N x N window around the pixel; a
-pixel that is itself active votes into all 12 bins of its polarity.
+Per pixel: the descriptor, 12 orientation bins of 30 degrees per polarity (bytes 0..11 OFF, 12..23 ON; packed,
+24 bytes per pixel, so that a cost window's row is one run of bytes for the SAD kernels), counting the
+vectors of the N x N window around the pixel; a pixel that is itself active votes into all 12 bins of its
+polarity.
 
 Activating an event can only shorten vectors within the maximum length of it; deactivating one
 re-searches only the pixels whose nearest event it was. Each vector change moves one vote in N x N
@@ -32,7 +33,7 @@ around the image, so that the vector offsets are plain index offsets: a border p
 class CV_EXPORTS ZouDescriptorMap  // exported for opencv_perf_event only; not public API
 {
 public:
-    enum { DESCRIPTOR_BYTES = 32, BINS = 12, NONE = 255 };
+    enum { DESCRIPTOR_BYTES = 24, BINS = 12, NONE = 255 };
 
     void configure(Size size, int descriptorWindow, int maxVectorLength, int margin);
     void reset();

@@ -5,29 +5,34 @@
 // The matcher's SIMD cost kernels against their scalar reference: the same integers for every window shape
 // the matcher uses (1..31 wide, 1..31 high), row steps of the descriptor map and of 0 (a row of zeros),
 // unaligned starts, and counts up to 255 (the largest a descriptor byte holds); the batch kernel for every
-// number of candidates up to 11 (its blocks of 4, 2 and 1), shifted either way along the row.
+// number of candidates up to 11 (its blocks of 4, 2 and 1), shifted either way along the row. Descriptors
+// are packed (24 bytes), so a row of w descriptors ends 0, 8, 16 or 24 bytes into a 32-byte chunk: widths
+// of every residue are checked, and the bytes right after each row are nonzero, so a kernel that read past
+// the rectangle would count them.
 
 #include "test_precomp.hpp"
 #include "../src/descriptor_cost.hpp"
+#include "../src/zou_descriptor_map.hpp"
 
 namespace opencv_test { namespace {
 
-// Sparse counts like real descriptors (one byte in `oneIn` nonzero, any value up to 255, so some saturated);
-// bytes 24..31 of each 32-byte descriptor stay 0 as in the map. a and b are drawn alternately, byte by byte.
+const int bytes = ZouDescriptorMap::DESCRIPTOR_BYTES;
+
+// Sparse counts like real descriptors (one byte in `oneIn` nonzero, any value up to 255, so some saturated).
+// a and b are drawn alternately, byte by byte.
 void fillSparseDescriptors(RNG& rng, int oneIn, std::vector<uchar>& a, std::vector<uchar>& b)
 {
     for (size_t i = 0; i < a.size(); i++)
     {
-        const bool used = (i % 32) < 24;
-        a[i] = used ? (uchar)(rng.uniform(0, oneIn) == 0 ? rng.uniform(0, 256) : 0) : 0;
-        b[i] = used ? (uchar)(rng.uniform(0, oneIn) == 0 ? rng.uniform(0, 256) : 0) : 0;
+        a[i] = (uchar)(rng.uniform(0, oneIn) == 0 ? rng.uniform(0, 256) : 0);
+        b[i] = (uchar)(rng.uniform(0, oneIn) == 0 ? rng.uniform(0, 256) : 0);
     }
 }
 
 TEST(Event_DescriptorCost, simd_kernel_equals_scalar_reference)
 {
     RNG rng(11);
-    const int stride = 40, rows = 34, bytes = 32;
+    const int stride = 40, rows = 34;
     std::vector<uchar> a((size_t)stride * rows * bytes + 64), b(a.size());
     fillSparseDescriptors(rng, 4, a, b);
     const size_t step = (size_t)stride * bytes;
@@ -47,16 +52,20 @@ TEST(Event_DescriptorCost, simd_kernel_equals_scalar_reference)
             }
     EXPECT_EQ(checked, 31 * 11 * 3);
     // Closed form: all 24 counts 255 against zeros over 31 x 31 descriptors.
-    std::vector<uchar> full((size_t)31 * bytes, 0), zeros(full.size(), 0);
-    for (size_t i = 0; i < full.size(); i++)
-        full[i] = (i % bytes) < 24 ? 255 : 0;
+    std::vector<uchar> full((size_t)31 * bytes, 255), zeros(full.size(), 0);
     EXPECT_EQ(simd(full.data(), zeros.data(), 0, 0, 31, 31), 31u * 31u * 24u * 255u);
+    // A rectangle that ends where its buffer ends: nothing past it is read (or counted).
+    for (int w = 1; w <= 8; w++)
+    {
+        std::vector<uchar> last((size_t)w * bytes, 7), none(last.size(), 0);
+        EXPECT_EQ(simd(last.data(), none.data(), 0, 0, w, 3), 3u * (unsigned)w * 24u * 7u) << w << " wide";
+    }
 }
 
 TEST(Event_DescriptorCost, batch_kernel_equals_one_rectangle_per_candidate_and_the_mass)
 {
     RNG rng(12);
-    const int stride = 80, rows = 34, bytes = 32;
+    const int stride = 80, rows = 34;
     std::vector<uchar> a((size_t)stride * rows * bytes), b(a.size());
     fillSparseDescriptors(rng, 3, a, b);
     const size_t step = (size_t)stride * bytes;
@@ -65,7 +74,7 @@ TEST(Event_DescriptorCost, batch_kernel_equals_one_rectangle_per_candidate_and_t
     int checked = 0;
     for (int sign : { -1, 1 })  // the left sensor's candidates lie to the left, the right one's to the right
         for (int n = 0; n <= 11; n++)
-            for (int w : { 1, 2, 9, 17, 31 })
+            for (int w : { 1, 2, 3, 4, 9, 17, 31 })  // rows ending 24, 16, 8, 0, 24, 24, 8 bytes into a chunk
                 for (int h : { 1, 9, 17, 31 })
                 {
                     // The rectangle at column 40; candidate i is shifted by a disparity of 2i + (i % 3) columns.
@@ -87,7 +96,7 @@ TEST(Event_DescriptorCost, batch_kernel_equals_one_rectangle_per_candidate_and_t
                         << "mass, " << n << " candidates, " << w << " x " << h << " (" << descriptorRectSadKernel() << ")";
                     checked++;
                 }
-    EXPECT_EQ(checked, 2 * 12 * 5 * 4);
+    EXPECT_EQ(checked, 2 * 12 * 7 * 4);
 }
 
 }}  // namespace

@@ -86,10 +86,10 @@ event is flagged ambiguous and gets no disparity rather than a wrong one.
 
 **Activity** (COUPLED, DECOUPLED): an event with a lifetime stays active for getActiveDistance() lifetimes
 (2.5 by default; the paper has 1), so each edge leaves a trail of 2.5 px in the descriptors. Measured on
-the simulator against 1 (density / within 1 px, 264 ms, uniqueness ratio 25 %): plane 98.7 / 99.96 -> 99.0 / 99.97 %, two_planes
-92.4 / 99.66 -> 93.9 / 99.72 %, cluttered 78.3 / 97.7 -> 80.6 / 97.8 %; over 1 s cluttered 83.9 -> 85.8 %
-at 98.7 -> 98.6 %, two_planes level (94.7 -> 94.5 %); the weak sensor of `faint_line` keeps more lifetimes
-(1,486 -> 1,525). Set 1 for the paper's method as published.
+the simulator against 1 (density / within 1 px, 264 ms, uniqueness ratio 25 %): plane 98.7 / 99.96 ->
+99.0 / 99.97 %, two_planes 92.4 / 99.66 -> 93.9 / 99.72 %, cluttered 78.3 / 97.7 -> 80.6 / 97.8 %; over
+1 s cluttered 83.9 -> 85.8 % at 98.7 -> 98.6 %, two_planes level (94.7 -> 94.5 %); the weak sensor of
+`faint_line` keeps more lifetimes (1,486 -> 1,525). Set 1 for the paper's method as published.
 
 **Cold start** (COUPLED, DECOUPLED): for one time window of the plane fit after the first event (after
 create() or reset(), or after a gap in the stream longer than that window), the surface cannot yet hold the
