@@ -304,10 +304,10 @@ int main(int argc, char** argv)
                 dominant = opt.minDisparity + (int)k;
             }
         imwrite(opt.output + "/disparity_histogram.png", histogramPicture(histogram, opt.minDisparity));
-        if (source.rejectedOutside() > 0)
-            std::cerr << "event_stereo: warning: " << (int64)source.rejectedOutside()
-                      << " input events lie outside the " << size.width << " x " << size.height
-                      << " sensor and were not processed (--sensor WxH sets the size)\n";
+        const int64 outside = (int64)source.rejectedOutside(), backwards = (int64)source.timeBackwards();
+        if (outside > 0)
+            std::cerr << "event_stereo: warning: " << outside << " input events lie outside the " << size.width
+                      << " x " << size.height << " sensor and were not processed (--sensor WxH sets the size)\n";
         auto pct = [](int64 a, int64 b) { return b ? 100.0 * (double)a / (double)b : 0.0; };
         std::ostringstream text;
         text << "# event_stereo summary\n\n| | |\n|---|---|\n"
@@ -316,7 +316,7 @@ int main(int argc, char** argv)
              << "| mode | " << opt.mode << ", disparities " << opt.minDisparity << ".." << opt.maxDisparity << " px |\n"
              << "| events | " << events << " (left " << perCamera[0] << ", right " << perCamera[1] << ") |\n"
              << "| input events outside the sensor (not processed) / going back in time (clamped) | "
-             << (int64)source.rejectedOutside() << " / " << (int64)source.timeBackwards() << " |\n"
+             << outside << " / " << backwards << " |\n"
              << "| processing | " << seconds << " s, " << (double)events / std::max(1e-9, seconds) / 1e6 << " Mev/s |\n"
              << "| events with a disparity | " << pct(withDisparity[0] + withDisparity[1], events) << " % (left "
              << pct(withDisparity[0], perCamera[0]) << " %, right " << pct(withDisparity[1], perCamera[1]) << " %) |\n"
