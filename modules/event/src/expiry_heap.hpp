@@ -26,6 +26,10 @@ public:
     }
 
     bool empty() const { return heap_.empty(); }
+    size_t size() const { return heap_.size(); }
+    // The i-th entry in heap order (not time order), for moving entries between heaps.
+    int64 timeAt(size_t i) const { return heap_[i].time; }
+    int idAt(size_t i) const { return heap_[i].id; }
     int64 topTime() const { return heap_[0].time; }
     int topId() const { return heap_[0].id; }
     bool contains(int id) const { return slot_[(size_t)id] >= 0; }

@@ -6,6 +6,7 @@
 // prediction shortcut of Hadviger et al. 2019. See lifetime_estimator.hpp for the method.
 
 #include "precomp.hpp"
+#include "lifetime_estimation_rows.hpp"
 #include "timestamp_math.hpp"
 
 #include <Eigen/Dense>
@@ -20,11 +21,6 @@ struct Prediction
     float a = 0, b = 0;   // time-surface gradient [ms/px]
     int64 t = 0;          // predicted arrival [us]
     bool valid = false;
-};
-
-struct Point3
-{
-    double x, y, t;  // px, px, ms (relative to the current event)
 };
 
 class LifetimeEstimatorImpl CV_FINAL : public LifetimeEstimator
@@ -67,6 +63,11 @@ public:
 
     float processEvent(const Event& e, Vec2f& flow, int& status) CV_OVERRIDE
     {
+        return processEvent(e, flow, status, own_);
+    }
+
+    float processEvent(const Event& e, Vec2f& flow, int& status, LifetimeScratch& scratch)
+    {
         checkInside(e);
         const int p = e.p ? 1 : 0;
         const size_t idx = index(e.x, e.y, p);
@@ -79,7 +80,7 @@ public:
             b = pred.b;
             status = LIFETIME_PREDICTED;
         }
-        else if (fit(e, p, pred, a, b))
+        else if (fit(e, p, pred, scratch.points, a, b))
             status = LIFETIME_FITTED;
         pred.valid = false;  // consumed (or stale)
         surface_[idx] = e.t;
@@ -95,7 +96,7 @@ public:
         }
         else
             status = LIFETIME_NOISE;
-        counts_[status]++;
+        scratch.counts[status]++;
         Active& act = active_[(size_t)e.y * size_.width + e.x];
         act.t = e.t;
         act.lifetime = lifetime;
@@ -104,6 +105,11 @@ public:
     }
 
     void insertEvent(const Event& e, float lifetime, const Vec2f& flow) CV_OVERRIDE
+    {
+        insertEvent(e, lifetime, flow, own_);
+    }
+
+    void insertEvent(const Event& e, float lifetime, const Vec2f& flow, LifetimeScratch& scratch)
     {
         checkInside(e);
         const int p = e.p ? 1 : 0;
@@ -117,7 +123,7 @@ public:
             const double vx = flow[0] * 1e-3, vy = flow[1] * 1e-3, v2ms = v2 * 1e-6;
             predictNeighbour(e, p, vx / v2ms, vy / v2ms);
         }
-        counts_[LIFETIME_MATCHED]++;
+        scratch.counts[LIFETIME_MATCHED]++;
         Active& act = active_[(size_t)e.y * size_.width + e.x];
         act.t = e.t;
         act.lifetime = std::max(lifetime, 0.f);
@@ -142,16 +148,28 @@ public:
         surface_.assign(2 * n, EventSurface::NO_EVENT);
         predictions_.assign(2 * n, Prediction());
         active_.assign(n, Active());
-        for (double& c : counts_)
+        for (double& c : own_.counts)
             c = 0;
-        rng_ = RNG((uint64)seed_ * 2654435761ULL + 1);
     }
+
+    void addCounts(LifetimeScratch& scratch)
+    {
+        for (int s = 0; s < 4; s++)
+        {
+            own_.counts[s] += scratch.counts[s];
+            scratch.counts[s] = 0;
+        }
+    }
+
+    // Rows above and below the event's that processEvent reads or writes: the fit's window, the predicted
+    // neighbour (one row).
+    int rowReach() const { return std::max(window_ / 2, 1); }
 
     double getStatusCount(int s) const CV_OVERRIDE
     {
         CV_CheckGE(s, 0, "LifetimeEstimator::getStatusCount: status 0..3");
         CV_CheckLE(s, 3, "LifetimeEstimator::getStatusCount: status 0..3");
-        return counts_[s];
+        return own_.counts[s];
     }
 
     Size getSensorSize() const CV_OVERRIDE { return size_; }
@@ -199,11 +217,7 @@ public:
     bool getUsePrediction() const CV_OVERRIDE { return usePrediction_; }
     void setUsePrediction(bool u) CV_OVERRIDE { usePrediction_ = u; }
     int getSeed() const CV_OVERRIDE { return seed_; }
-    void setSeed(int s) CV_OVERRIDE
-    {
-        seed_ = s;
-        rng_ = RNG((uint64)seed_ * 2654435761ULL + 1);
-    }
+    void setSeed(int s) CV_OVERRIDE { seed_ = s; }
 
     void write(FileStorage& fs) const CV_OVERRIDE
     {
@@ -260,11 +274,22 @@ private:
 
     size_t index(int x, int y, int p) const { return (size_t)p * size_.area() + (size_t)y * size_.width + x; }
 
+    // A 64-bit mix (splitmix64's finaliser) of the seed and the event: pixel, polarity, time.
+    uint64 sampleSeed(const Event& e, int p) const
+    {
+        uint64 z = (uint64)(uint32_t)seed_ * 0x9E3779B97F4A7C15ULL;
+        z ^= ((uint64)(uint16_t)e.x << 48) ^ ((uint64)(uint16_t)e.y << 32) ^ ((uint64)p << 31) ^ (uint64)e.t;
+        z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ULL;
+        z = (z ^ (z >> 27)) * 0x94D049BB133111EBULL;
+        z ^= z >> 31;
+        return z ? z : 1;
+    }
+
     // RANSAC + refit. On success, (a, b) is the time-surface gradient [ms/px].
-    bool fit(const Event& e, int p, const Prediction& pred, double& a, double& b)
+    bool fit(const Event& e, int p, const Prediction& pred, std::vector<SurfacePoint>& points, double& a, double& b)
     {
         const int r = window_ / 2;
-        points_.clear();
+        points.clear();
         const int64 oldest = timeBefore(e.t, (int64)timeWindow_);
         for (int dy = -r; dy <= r; dy++)
         {
@@ -280,23 +305,26 @@ private:
                 const int64 ts = row[x];
                 if (ts == EventSurface::NO_EVENT || ts < oldest || ts > e.t)
                     continue;
-                points_.push_back(Point3{ (double)dx, (double)dy, (double)(ts - e.t) * 1e-3 });
+                points.push_back(SurfacePoint{ (double)dx, (double)dy, (double)(ts - e.t) * 1e-3 });
             }
         }
-        const int m = (int)points_.size();
+        const int m = (int)points.size();
         if (m + 1 < minInliers_ || m < 2)
             return false;
 
+        // The samples depend on the seed and the event alone, not on how many fits ran before: the same
+        // results whatever the order of calls for events in distant rows (StereoEventMatcher's row bands).
+        RNG rng(sampleSeed(e, p));
         int bestCount = 0;
         double bestA = 0, bestB = 0;
         for (int it = 0; it < maxIterations_; it++)
         {
-            const int i = rng_.uniform(0, m);
-            int j = rng_.uniform(0, m - 1);
+            const int i = rng.uniform(0, m);
+            int j = rng.uniform(0, m - 1);
             if (j >= i)
                 j++;
-            const Point3& p1 = points_[i];
-            const Point3& p2 = points_[j];
+            const SurfacePoint& p1 = points[i];
+            const SurfacePoint& p2 = points[j];
             // Plane t = a x + b y through the current event (origin) and the two samples.
             const double det = p1.x * p2.y - p2.x * p1.y;
             if (std::abs(det) < 1e-9)
@@ -304,7 +332,7 @@ private:
             const double ha = (p1.t * p2.y - p2.t * p1.y) / det;
             const double hb = (p1.x * p2.t - p2.x * p1.t) / det;
             int count = 1;  // the current event lies on every hypothesis
-            for (const Point3& q : points_)
+            for (const SurfacePoint& q : points)
                 count += std::abs(ha * q.x + hb * q.y - q.t) <= inlierThreshold_;
             if (count > bestCount)
             {
@@ -326,7 +354,7 @@ private:
             atb += row * t;
         };
         add(0, 0, 0);
-        for (const Point3& q : points_)
+        for (const SurfacePoint& q : points)
             if (std::abs(bestA * q.x + bestB * q.y - q.t) <= inlierThreshold_)
                 add(q.x, q.y, q.t);
         if (pred.valid && lambda_ > 0)
@@ -371,12 +399,10 @@ private:
     double predictionTolerance_ = 1000;
     bool usePrediction_ = true;
     int seed_ = 0;
-    RNG rng_;
     std::vector<int64> surface_;
     std::vector<Prediction> predictions_;
     std::vector<Active> active_;
-    std::vector<Point3> points_;
-    double counts_[4] = { 0, 0, 0, 0 };
+    LifetimeScratch own_;  // the working memory of the public calls; its counts are the estimator's
 };
 
 }  // namespace
@@ -384,6 +410,27 @@ private:
 Ptr<LifetimeEstimator> LifetimeEstimator::create(Size sensorSize)
 {
     return makePtr<LifetimeEstimatorImpl>(sensorSize);
+}
+
+float processEventInRows(LifetimeEstimator& estimator, const Event& e, Vec2f& flow, int& status, LifetimeScratch& scratch)
+{
+    return static_cast<LifetimeEstimatorImpl&>(estimator).processEvent(e, flow, status, scratch);
+}
+
+void insertEventInRows(LifetimeEstimator& estimator, const Event& e, float lifetime, const Vec2f& flow,
+                       LifetimeScratch& scratch)
+{
+    static_cast<LifetimeEstimatorImpl&>(estimator).insertEvent(e, lifetime, flow, scratch);
+}
+
+void addStatusCounts(LifetimeEstimator& estimator, LifetimeScratch& scratch)
+{
+    static_cast<LifetimeEstimatorImpl&>(estimator).addCounts(scratch);
+}
+
+int lifetimeRowReach(const LifetimeEstimator& estimator)
+{
+    return static_cast<const LifetimeEstimatorImpl&>(estimator).rowReach();
 }
 
 }  // namespace event

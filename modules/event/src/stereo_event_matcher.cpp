@@ -10,11 +10,15 @@
 #include "ascii.hpp"
 #include "descriptor_cost.hpp"
 #include "frame_sgbm_matcher.hpp"
+#include "lifetime_estimation_rows.hpp"
 #include "zou_descriptor_map.hpp"
 
 #include "opencv2/imgproc.hpp"
 
+#include <atomic>
+#include <exception>
 #include <limits>
+#include <thread>
 
 namespace cv {
 namespace event {
@@ -26,6 +30,34 @@ struct MatchResult
     float disparity = -1.f;
     int counterpartX = -1;  // the matched pixel of the other sensor (integer disparity)
     int flags = 0;          // STEREO_AMBIGUOUS / STEREO_NO_COUNTERPART when no disparity
+};
+
+struct Neighbour
+{
+    float lifetime;
+    int x, y;
+};
+
+// The working memory of matching one event (one per thread): the candidates as disparity index (disparity -
+// min) in increasing order, the byte offset of each one's descriptor in the other sensor from the event's
+// column, and their costs; the matched window's lifetimes; the left-right check's disparities; the lifetime
+// estimators' scratch, per camera.
+struct MatchScratch
+{
+    std::vector<int> candidates;
+    std::vector<ptrdiff_t> offsets;
+    std::vector<unsigned> cost;
+    std::vector<Neighbour> neighbours;
+    std::vector<float> disparities;
+    LifetimeScratch lifetimes[2];
+};
+
+// A row band's progress for processInBands: the key of the next operation it has not done yet. Padded to a
+// cache line: each band's thread writes its own after every operation.
+struct BandProgress
+{
+    std::atomic<int64> key;
+    char padding[64 - sizeof(std::atomic<int64>)];
 };
 
 class StereoEventMatcherImpl CV_FINAL : public StereoEventMatcher
@@ -87,6 +119,11 @@ public:
             processFrames(ev, store);
             return;
         }
+        if (numThreads_ > 1 && n >= MIN_EVENTS_FOR_BANDS)
+        {
+            processInBands(ev, store);
+            return;
+        }
         StereoEventEstimate s;
         for (int i = 0; i < n; i++)
         {
@@ -94,6 +131,8 @@ public:
             store(i, s);
         }
     }
+
+    enum { MIN_EVENTS_FOR_BANDS = 1000 };
 
     void processEvent(const Event& e, StereoEventEstimate& est) CV_OVERRIDE
     {
@@ -108,30 +147,39 @@ public:
             est.flags = STEREO_OUTSIDE;
             return;
         }
+        maps_[0].expireUntil(e.t);
+        maps_[1].expireUntil(e.t);
+        processAdmitted(e, r, coldStartEnd_, scratch_, est);
+        addStatusCounts(*estimators_[e.camera], scratch_.lifetimes[e.camera]);
+    }
+
+    // processEvent after admit() and the expiries due: the event at rectified pixel r, inside the image.
+    // Reads and writes only rows within rowReach() of r.y, with its own scratch: see processInBands().
+    void processAdmitted(const Event& e, Point r, int64 coldStartEnd, MatchScratch& s, StereoEventEstimate& est)
+    {
         const int c = e.camera, p = e.p ? 1 : 0;
         Event re = e;
         re.x = (short)r.x;
         re.y = (short)r.y;
-        maps_[0].expireUntil(e.t);
-        maps_[1].expireUntil(e.t);
+        LifetimeEstimator& estimator = *estimators_[c];
 
         int status = -1;
         if (mode_ == STEREO_DECOUPLED)
-            est.lifetime = estimators_[c]->processEvent(re, est.flow, status);
+            est.lifetime = processEventInRows(estimator, re, est.flow, status, s.lifetimes[c]);
         // The event takes part in its own descriptor while it is matched; its final activity follows below.
         maps_[c].activate(r.x, r.y, p, std::numeric_limits<int64>::max(), 0.f, Vec2f());
-        const MatchResult m = match(c, r, p);
+        const MatchResult m = match(c, r, p, e.t, s);
         est.disparity = m.disparity;
         est.flags |= m.flags;
         if (mode_ == STEREO_COUPLED)
         {
-            if (m.disparity >= 0 && matchedLifetime(1 - c, m.counterpartX, r.y, p, est.lifetime, est.flow))
+            if (m.disparity >= 0 && matchedLifetime(1 - c, m.counterpartX, r.y, p, s, est.lifetime, est.flow))
             {
-                estimators_[c]->insertEvent(re, est.lifetime, est.flow);
+                insertEventInRows(estimator, re, est.lifetime, est.flow, s.lifetimes[c]);
                 status = LIFETIME_MATCHED;
             }
             else
-                est.lifetime = estimators_[c]->processEvent(re, est.flow, status);
+                est.lifetime = processEventInRows(estimator, re, est.flow, status, s.lifetimes[c]);
         }
 
         int64 activeFor = 0;
@@ -139,7 +187,7 @@ public:
             activeFor = fixedInterval_;
         else if (est.lifetime > 0)
             activeFor = activeSpan(est.lifetime);
-        else if (e.t < coldStartEnd_)
+        else if (e.t < coldStartEnd)
         {
             // Cold start: during the plane fit's first time window the surface cannot hold the history a fit
             // needs, so a scene's first edges fail it for want of neighbours, not for being noise, and without
@@ -223,11 +271,18 @@ public:
         }
         frames_.configure(size_, minDisparity_, maxDisparity_, frameWindow_);
         lastTime_ = std::numeric_limits<int64>::min();
-        neighbours_.resize((size_t)costWindow_ * costWindow_);
+        sizeScratch(scratch_);
+        for (MatchScratch& s : bandScratch_)
+            sizeScratch(s);
+    }
+
+    void sizeScratch(MatchScratch& s) const
+    {
+        s.neighbours.resize((size_t)costWindow_ * costWindow_);
         const size_t range = (size_t)(maxDisparity_ - minDisparity_ + 1);
-        candidates_.reserve(range);
-        offsets_.reserve(range);
-        cost_.reserve(range);
+        s.candidates.reserve(range);
+        s.offsets.reserve(range);
+        s.cost.reserve(range);
     }
 
     void setCalibration(const StereoCalibration& calibration) CV_OVERRIDE
@@ -357,6 +412,13 @@ public:
             CV_Error_(Error::StsBadArg, ("StereoEventMatcher: active distance %g px; must be 0.1..100 px (1: active "
                                          "for one lifetime, as in the paper)", px));
         activeDistance_ = px;
+    }
+    int getNumThreads() const CV_OVERRIDE { return numThreads_; }
+    void setNumThreads(int threads) CV_OVERRIDE
+    {
+        if (threads < 1 || threads > 64)
+            CV_Error_(Error::StsBadArg, ("StereoEventMatcher: %d threads; must be 1..64", threads));
+        numThreads_ = threads;
     }
 
     void write(FileStorage& fs) const CV_OVERRIDE
@@ -488,14 +550,15 @@ private:
 
     // Adds the SAD over the rectangle [x0, x1] x [y0, y1] (relative to the event) to every candidate's cost;
     // returns the same sum against an empty map (the event's side alone).
-    unsigned addRect(const ZouDescriptorMap& self, const ZouDescriptorMap& other, Point r, int x0, int x1, int y0, int y1)
+    unsigned addRect(const ZouDescriptorMap& self, const ZouDescriptorMap& other, Point r, int x0, int x1, int y0, int y1,
+                     MatchScratch& s) const
     {
         if (!clipToImage(r, x0, x1, y0, y1))
             return 0;
-        // Candidate i's rectangle is this one shifted by its disparity along the row: offsets_[i] bytes.
+        // Candidate i's rectangle is this one shifted by its disparity along the row: offsets[i] bytes.
         return rectSadBatch_(self.descriptor(r.x + x0, r.y + y0), other.descriptor(r.x + x0, r.y + y0),
-                             self.descriptorRowStep(), other.descriptorRowStep(), offsets_.data(),
-                             (int)candidates_.size(), x1 - x0 + 1, y1 - y0 + 1, cost_.data());
+                             self.descriptorRowStep(), other.descriptorRowStep(), s.offsets.data(),
+                             (int)s.candidates.size(), x1 - x0 + 1, y1 - y0 + 1, s.cost.data());
     }
 
     // Clips the rectangle [x0, x1] x [y0, y1] relative to the event's pixel r to the image; false when nothing is
@@ -519,14 +582,17 @@ private:
                              x1 - x0 + 1, y1 - y0 + 1, nullptr);
     }
 
-    MatchResult match(int c, Point r, int p)
+    // Matches the event at r (camera c, polarity p, time t) along its row.
+    MatchResult match(int c, Point r, int p, int64 t, MatchScratch& s) const
     {
         MatchResult m;
         const ZouDescriptorMap& self = maps_[c];
         const ZouDescriptorMap& other = maps_[1 - c];
         const int sign = c == CAMERA_LEFT ? -1 : 1;  // left x_l matches right x_l - d; right x_r matches left x_r + d
-        candidates_.clear();
-        offsets_.clear();
+        std::vector<int>& candidates = s.candidates;
+        std::vector<unsigned>& cost = s.cost;
+        candidates.clear();
+        s.offsets.clear();
         // Disparity indices k whose column xo = r.x + sign * (min + k) lies in the other image; there, a candidate
         // is a column where the other sensor has structure of this polarity.
         const int kEnd = std::min(maxDisparity_, sign < 0 ? r.x : size_.width - 1 - r.x) - minDisparity_ + 1;
@@ -535,30 +601,30 @@ private:
         for (int k = 0; k < kEnd; k++)
             if (structure[x0 + sign * k] != ZouDescriptorMap::NONE)
             {
-                candidates_.push_back(k);
-                offsets_.push_back((ptrdiff_t)sign * (minDisparity_ + k) * ZouDescriptorMap::DESCRIPTOR_BYTES);
+                candidates.push_back(k);
+                s.offsets.push_back((ptrdiff_t)sign * (minDisparity_ + k) * ZouDescriptorMap::DESCRIPTOR_BYTES);
             }
-        const int n = (int)candidates_.size();
+        const int n = (int)candidates.size();
         if (n == 0)
         {
             m.flags = STEREO_NO_COUNTERPART;
             return m;
         }
-        cost_.assign((size_t)n, 0u);
+        cost.assign((size_t)n, 0u);
         int h = costWindow_ / 2;
-        unsigned mass = addRect(self, other, r, -h, h, -h, h);
+        unsigned mass = addRect(self, other, r, -h, h, -h, h, s);
         for (;;)
         {
             int best = 0;  // index into candidates_, which run by disparity: ties go to the smaller disparity
             for (int i = 1; i < n; i++)
-                if (cost_[(size_t)i] < cost_[(size_t)best])
+                if (cost[(size_t)i] < cost[(size_t)best])
                     best = i;
-            const int kBest = candidates_[(size_t)best];
+            const int kBest = candidates[(size_t)best];
             unsigned second = std::numeric_limits<unsigned>::max();
             for (int i = 0; i < n; i++)
-                if (std::abs(candidates_[(size_t)i] - kBest) > 1)
-                    second = std::min(second, cost_[(size_t)i]);
-            const unsigned bestCost = cost_[(size_t)best];
+                if (std::abs(candidates[(size_t)i] - kBest) > 1)
+                    second = std::min(second, cost[(size_t)i]);
+            const unsigned bestCost = cost[(size_t)best];
             // Unique: clearly better than every candidate further than one pixel away, and clearly better than
             // no match. "No counterpart (yet)" is one more hypothesis, with the cost of matching against nothing
             // (the window's mass); a winner that only just beats it is most often a neighbour of a counterpart
@@ -581,16 +647,16 @@ private:
             {
                 double d = minDisparity_ + kBest;
                 // Candidates run by disparity: the neighbours, when they are candidates, are next to the best.
-                if (best > 0 && best < n - 1 && candidates_[(size_t)best - 1] == kBest - 1 &&
-                    candidates_[(size_t)best + 1] == kBest + 1)
+                if (best > 0 && best < n - 1 && candidates[(size_t)best - 1] == kBest - 1 &&
+                    candidates[(size_t)best + 1] == kBest + 1)
                 {
-                    const double cm = cost_[(size_t)best - 1], c0 = bestCost, cp = cost_[(size_t)best + 1];
+                    const double cm = cost[(size_t)best - 1], c0 = bestCost, cp = cost[(size_t)best + 1];
                     const double denom = cm + cp - 2 * c0;
                     if (denom > 0)
                         d += std::max(-0.5, std::min(0.5, 0.5 * (cm - cp) / denom));
                 }
                 m.counterpartX = xo;
-                if (!consistent(1 - c, m.counterpartX, r.y, d))
+                if (!consistent(1 - c, m.counterpartX, r.y, d, t, s))
                 {
                     m.flags = STEREO_AMBIGUOUS;
                     return m;
@@ -602,10 +668,10 @@ private:
                 break;
             // Iterative aggregation: add the ring one pixel further out.
             h++;
-            mass += addRect(self, other, r, -h, h, -h, -h);
-            mass += addRect(self, other, r, -h, h, h, h);
-            mass += addRect(self, other, r, -h, -h, -h + 1, h - 1);
-            mass += addRect(self, other, r, h, h, -h + 1, h - 1);
+            mass += addRect(self, other, r, -h, h, -h, -h, s);
+            mass += addRect(self, other, r, -h, h, h, h, s);
+            mass += addRect(self, other, r, -h, -h, -h + 1, h - 1, s);
+            mass += addRect(self, other, r, h, h, -h + 1, h - 1, s);
         }
         m.flags = STEREO_AMBIGUOUS;
         return m;
@@ -614,22 +680,23 @@ private:
     // Left-right check against the other sensor's own estimates: the active events around the counterpart
     // were matched the other way (toward this sensor); when they have disparities, their median must agree
     // within one pixel. Without any there is nothing to contradict the match.
-    bool consistent(int c, int x, int y, double d)
+    bool consistent(int c, int x, int y, double d, int64 t, MatchScratch& s) const
     {
         const std::vector<PixelEstimate>& last = lastEstimate_[c];
-        disparities_.clear();
+        std::vector<float>& disparities = s.disparities;
+        disparities.clear();
         for (int yy = std::max(0, y - 1); yy <= std::min(size_.height - 1, y + 1); yy++)
             for (int xx = std::max(0, x - 1); xx <= std::min(size_.width - 1, x + 1); xx++)
             {
                 const size_t i = (size_t)yy * size_.width + xx;
-                if (last[i].disparity >= 0 && lastTime_ < last[i].until)
-                    disparities_.push_back(last[i].disparity);
+                if (last[i].disparity >= 0 && t < last[i].until)
+                    disparities.push_back(last[i].disparity);
             }
-        if (disparities_.empty())
+        if (disparities.empty())
             return true;
-        const size_t mid = disparities_.size() / 2;
-        std::nth_element(disparities_.begin(), disparities_.begin() + (std::ptrdiff_t)mid, disparities_.end());
-        return std::abs(disparities_[mid] - d) <= 1.0;
+        const size_t mid = disparities.size() / 2;
+        std::nth_element(disparities.begin(), disparities.begin() + (std::ptrdiff_t)mid, disparities.end());
+        return std::abs(disparities[mid] - d) <= 1.0;
     }
 
     // How long an event with this lifetime (us per pixel) stays active: until its edge has moved
@@ -642,13 +709,13 @@ private:
 
     // Median lifetime (and the flow of that event) of the active events of polarity p in the cost window
     // around (x, y) of sensor c. False when none has a lifetime.
-    bool matchedLifetime(int c, int x, int y, int p, float& lifetime, Vec2f& flow)
+    bool matchedLifetime(int c, int x, int y, int p, MatchScratch& s, float& lifetime, Vec2f& flow) const
     {
         const ZouDescriptorMap& map = maps_[c];
         const int h = costWindow_ / 2;
         // Every pixel is written, and the end advances past those with a lifetime: no branch on the (random)
-        // activity pattern. neighbours_ holds a whole window (reset()).
-        Neighbour* const first = neighbours_.data();
+        // activity pattern. The scratch holds a whole window (sizeScratch()).
+        Neighbour* const first = s.neighbours.data();
         Neighbour* end = first;
         const int x0 = std::max(0, x - h), x1 = std::min(size_.width - 1, x + h);
         for (int yy = std::max(0, y - h); yy <= std::min(size_.height - 1, y + h); yy++)
@@ -715,6 +782,196 @@ private:
         }
     }
 
+    // How many rows above and below its own an event's processing reads or writes: the aggregation window's
+    // descriptors (match), the matched window (its median lifetime), the left-right check's 3 x 3, the vectors
+    // an activation or deactivation changes (2 x the max length for the re-search) and their votes, the plane
+    // fit's window. Operations further apart in rows than the sum of their reaches touch disjoint state.
+    int eventRowReach() const
+    {
+        return std::max({ aggregationWindow_ / 2, costWindow_ / 2, 1, expiryRowReach(), lifetimeRowReach(*estimators_[0]),
+                          lifetimeRowReach(*estimators_[1]) });
+    }
+    // The same for an expiry (a deactivation).
+    int expiryRowReach() const { return std::max(2 * maxVectorLength_, maxVectorLength_ + descriptorWindow_ / 2); }
+
+    // First rows of `bands` bands of at least minHeight rows, each holding about as many of the first `valid`
+    // admitted events.
+    std::vector<int> splitRows(int valid, int bands, int minHeight) const
+    {
+        std::vector<int> rows((size_t)size_.height + 1, 0);  // rows[y + 1]: inside events in rows <= y
+        for (int i = 0; i < valid; i++)
+            if (admitted_[(size_t)i].rectified.x >= 0)
+                rows[(size_t)admitted_[(size_t)i].rectified.y + 1]++;
+        for (int y = 0; y < size_.height; y++)
+            rows[(size_t)y + 1] += rows[(size_t)y];
+        const int64 total = rows.back();
+        std::vector<int> first(1, 0);
+        for (int b = 1; b < bands; b++)
+        {
+            const int64 target = total * b / bands;
+            const int y = (int)(std::lower_bound(rows.begin(), rows.end(), target) - rows.begin());
+            first.push_back(std::min(std::max(y, first.back() + minHeight), size_.height - (bands - b) * minHeight));
+        }
+        return first;
+    }
+
+    // process() on several threads, with the results of one. The rows are split into bands, each processed by
+    // its own thread in time order: its events, and the expiries of its pixels (both maps) where the single
+    // thread would take them (before the first event at or after the expiry time). Every operation has a key,
+    // its place in the single thread's order: position x (bands + 1) + band for an expiry (position: the index
+    // of that first event; expiries at one position commute, the map's state depends only on what is active),
+    // index x (bands + 1) + bands for an event. An operation whose rows (its row +- its reach) may meet rows
+    // the neighbouring band's operations touch (that band's rows + the largest reach) first waits until the
+    // neighbour's next operation has a larger key: every operation it could conflict with then ran in the
+    // single thread's order. Bands are at least 2 x the largest reach + 1 tall, so only neighbours can meet.
+    // Two bands never wait on each other at once: the smaller of their keys goes first.
+    template <typename Store>
+    void processInBands(const Mat_<Event>& ev, Store& store)
+    {
+        const int n = (int)ev.total();
+        admitted_.resize((size_t)n);
+        times_.resize((size_t)n);
+        // Admission in order: the checks, the rectified pixel and the cold start depend on the events before.
+        // An event that fails it ends the packet after the events before it, as on one thread.
+        int valid = n;
+        std::exception_ptr badEvent;
+        for (int i = 0; i < n; i++)
+        {
+            Admission& a = admitted_[(size_t)i];
+            try
+            {
+                a.rectified = admit(ev(i));
+            }
+            catch (...)
+            {
+                badEvent = std::current_exception();
+                valid = i;
+                break;
+            }
+            a.coldStartEnd = coldStartEnd_;
+            times_[(size_t)i] = ev(i).t;
+            if (a.rectified.x < 0)
+            {
+                StereoEventEstimate outside;
+                outside.rectified = a.rectified;
+                outside.flags = STEREO_OUTSIDE;
+                store(i, outside);
+            }
+        }
+        const int reach = eventRowReach();
+        const int bands = std::max(1, std::min(numThreads_, size_.height / (2 * reach + 1)));
+        const std::vector<int> first = splitRows(valid, bands, 2 * reach + 1);
+        maps_[0].setRowBands(first);
+        maps_[1].setRowBands(first);
+        if (bandScratch_.size() < (size_t)bands)
+        {
+            bandScratch_.resize((size_t)bands);
+            for (MatchScratch& s : bandScratch_)
+                sizeScratch(s);
+        }
+        progress_.reset(new BandProgress[(size_t)bands]);
+        for (int b = 0; b < bands; b++)
+            progress_[(size_t)b].key.store(-1, std::memory_order_relaxed);
+        std::vector<std::exception_ptr> failures((size_t)bands);
+        auto run = [&](int b) {
+            try
+            {
+                runBand(b, bands, valid, ev, store);
+            }
+            catch (...)
+            {
+                failures[(size_t)b] = std::current_exception();
+            }
+            // Done (or failed): never keep the neighbours waiting.
+            progress_[(size_t)b].key.store(std::numeric_limits<int64>::max(), std::memory_order_release);
+        };
+        std::vector<std::thread> threads;
+        for (int b = 1; b < bands; b++)
+            threads.emplace_back(run, b);
+        run(0);
+        for (std::thread& t : threads)
+            t.join();
+        for (int b = 0; b < bands; b++)
+            for (int c = 0; c < 2; c++)
+                addStatusCounts(*estimators_[c], bandScratch_[(size_t)b].lifetimes[c]);
+        for (const std::exception_ptr& f : failures)
+            if (f)
+                std::rethrow_exception(f);
+        if (badEvent)
+            std::rethrow_exception(badEvent);
+    }
+
+    // Band b's thread of processInBands.
+    template <typename Store>
+    void runBand(int b, int bands, int valid, const Mat_<Event>& ev, Store& store)
+    {
+        MatchScratch& s = bandScratch_[(size_t)b];
+        const std::vector<int>& first = maps_[0].rowBands();
+        const int top = first[(size_t)b], bottom = b + 1 < bands ? first[(size_t)b + 1] : size_.height;
+        const int reach = eventRowReach(), expiryReach = expiryRowReach();  // reach is the largest
+        const int64 stride = bands + 1, none = std::numeric_limits<int64>::max();
+        BandProgress& mine = progress_[(size_t)b];
+        // Waits until the neighbours whose operations may touch rows [y - r, y + r] are past `key`.
+        auto waitForNeighbours = [&](int y, int r, int64 key) {
+            if (b > 0 && y - r < top + reach)
+                waitPast(progress_[(size_t)b - 1], key);
+            if (b + 1 < bands && y + r >= bottom - reach)
+                waitPast(progress_[(size_t)b + 1], key);
+        };
+        int i = 0;
+        for (;;)
+        {
+            while (i < valid && !(admitted_[(size_t)i].rectified.x >= 0 && admitted_[(size_t)i].rectified.y >= top &&
+                                  admitted_[(size_t)i].rectified.y < bottom))
+                i++;
+            const int64 eventKey = i < valid ? (int64)i * stride + bands : none;
+            int64 expiryKey = none;
+            int map = -1, expiryRow = 0;
+            int64 expiryTime = none;
+            for (int c = 0; c < 2; c++)
+            {
+                int64 t;
+                int row;
+                if (maps_[c].earliestExpiry(b, t, row) && t < expiryTime)
+                {
+                    map = c;
+                    expiryTime = t;
+                    expiryRow = row;
+                }
+            }
+            if (map >= 0)
+            {
+                const int64 position = std::lower_bound(times_.begin(), times_.begin() + valid, expiryTime) - times_.begin();
+                if (position < valid)
+                    expiryKey = position * stride + b;
+            }
+            const int64 key = std::min(eventKey, expiryKey);
+            if (key == none)
+                break;
+            mine.key.store(key, std::memory_order_release);
+            if (expiryKey < eventKey)
+            {
+                waitForNeighbours(expiryRow, expiryReach, key);
+                maps_[map].expireEarliest(b);
+                continue;
+            }
+            const Admission& a = admitted_[(size_t)i];
+            waitForNeighbours(a.rectified.y, reach, key);
+            StereoEventEstimate est;
+            est.rectified = a.rectified;
+            processAdmitted(ev(i), a.rectified, a.coldStartEnd, s, est);
+            store(i, est);
+            i++;
+        }
+    }
+
+    static void waitPast(const BandProgress& neighbour, int64 key)
+    {
+        for (int spins = 0; neighbour.key.load(std::memory_order_acquire) <= key; spins++)
+            if (spins >= 64)
+                std::this_thread::yield();
+    }
+
     Mat colourLut() const
     {
         Mat ramp(256, 1, CV_8U), lut;
@@ -747,18 +1004,18 @@ private:
     int64 coldStartEnd_ = 0;  // the end of the cold start: see admit()
     // The cost kernel for this CPU (candidates' costs and window masses), fetched once.
     DescriptorRectSadBatchFn rectSadBatch_ = descriptorRectSadBatchFunction();
-    // The current event's candidates: disparity index (disparity - min) in increasing order, byte offset of the
-    // other sensor's descriptor from the event's column, and cost.
-    std::vector<int> candidates_;
-    std::vector<ptrdiff_t> offsets_;
-    std::vector<unsigned> cost_;
-    struct Neighbour
+    MatchScratch scratch_;  // processEvent's
+    int numThreads_ = 1;
+    // processInBands: each band's scratch and progress; each event's admission and time.
+    struct Admission
     {
-        float lifetime;
-        int x, y;
+        Point rectified;
+        int64 coldStartEnd;
     };
-    std::vector<Neighbour> neighbours_;
-    std::vector<float> disparities_;
+    std::vector<MatchScratch> bandScratch_;
+    std::unique_ptr<BandProgress[]> progress_;
+    std::vector<Admission> admitted_;
+    std::vector<int64> times_;
 };
 
 }  // namespace

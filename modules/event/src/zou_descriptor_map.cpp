@@ -68,7 +68,53 @@ void ZouDescriptorMap::reset()
     lifetime_.assign(ids, 0.f);
     flow_.assign(ids, Vec2f());
     descriptors_.assign((size_t)stride_ * (size_.height + 2 * margin_) * DESCRIPTOR_BYTES, 0);
-    expiry_.reset((int)ids);
+    if (bandFirstRow_.empty() || bandFirstRow_.back() >= size_.height)
+        bandFirstRow_.assign(1, 0);
+    rowBand_.assign((size_t)size_.height, 0);
+    for (size_t b = 1; b < bandFirstRow_.size(); b++)
+        std::fill(rowBand_.begin() + bandFirstRow_[b], rowBand_.end(), (uchar)b);
+    expiry_.resize(bandFirstRow_.size());
+    for (ExpiryHeap& heap : expiry_)
+        heap.reset((int)ids);
+}
+
+void ZouDescriptorMap::setRowBands(const std::vector<int>& firstRows)
+{
+    CV_Assert(!firstRows.empty() && firstRows[0] == 0 && firstRows.size() <= 256 && firstRows.back() < size_.height);
+    for (size_t b = 1; b < firstRows.size(); b++)
+        CV_Assert(firstRows[b] > firstRows[b - 1]);
+    if (firstRows == bandFirstRow_)
+        return;
+    // Move the pending expiries to the heaps of their new bands.
+    std::vector<std::pair<int, int64>> pending;
+    for (const ExpiryHeap& heap : expiry_)
+        for (size_t i = 0; i < heap.size(); i++)
+            pending.emplace_back(heap.idAt(i), heap.timeAt(i));
+    bandFirstRow_ = firstRows;
+    rowBand_.assign((size_t)size_.height, 0);
+    for (size_t b = 1; b < bandFirstRow_.size(); b++)
+        std::fill(rowBand_.begin() + bandFirstRow_[b], rowBand_.end(), (uchar)b);
+    const int ids = (int)active_.size();
+    expiry_.resize(bandFirstRow_.size());
+    for (ExpiryHeap& heap : expiry_)
+        heap.reset(ids);
+    for (const std::pair<int, int64>& e : pending)
+        heapOfRow(rowOf(e.first)).set(e.first, e.second);
+}
+
+bool ZouDescriptorMap::earliestExpiry(int band, int64& time, int& row) const
+{
+    const ExpiryHeap& heap = expiry_[(size_t)band];
+    if (heap.empty())
+        return false;
+    time = heap.topTime();
+    row = rowOf(heap.topId());
+    return true;
+}
+
+void ZouDescriptorMap::expireEarliest(int band)
+{
+    deactivateId(expiry_[(size_t)band].topId());
 }
 
 template <typename Op>
@@ -141,7 +187,7 @@ void ZouDescriptorMap::activate(int x, int y, int p, int64 expiry, float lifetim
     const int i = id(x, y, p);
     lifetime_[i] = lifetime;
     flow_[i] = flow;
-    expiry_.set(i, expiry);
+    heapOfRow(y).set(i, expiry);
     if (active_[i])
         return;
     active_[i] = 1;
@@ -167,11 +213,11 @@ void ZouDescriptorMap::deactivate(int x, int y, int p)
 
 void ZouDescriptorMap::deactivateId(int i)
 {
-    expiry_.remove(i);
-    active_[i] = 0;
-    lifetime_[i] = 0.f;
     const int plane = paddedWidth_ * paddedHeight_;
     const int p = i / plane, x = (i % plane) % paddedWidth_ - border_, y = (i % plane) / paddedWidth_ - border_;
+    heapOfRow(y).remove(i);
+    active_[i] = 0;
+    lifetime_[i] = 0.f;
     for (int k = 0; k < (int)idOffsets_.size(); k++)
     {
         const int s = i - idOffsets_[(size_t)k];
@@ -186,8 +232,10 @@ void ZouDescriptorMap::deactivateId(int i)
 
 void ZouDescriptorMap::expireUntil(int64 t)
 {
-    while (!expiry_.empty() && expiry_.topTime() <= t)
-        deactivateId(expiry_.topId());
+    // Band by band: the state after these expiries does not depend on their order.
+    for (ExpiryHeap& heap : expiry_)
+        while (!heap.empty() && heap.topTime() <= t)
+            deactivateId(heap.topId());
 }
 
 }  // namespace event

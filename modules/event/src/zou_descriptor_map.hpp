@@ -25,7 +25,10 @@ polarity.
 Activating an event can only shorten vectors within the maximum length of it; deactivating one
 re-searches only the pixels whose nearest event it was. Each vector change moves one vote in N x N
 descriptors. The descriptor map has a zero margin around the image so that cost windows can run past the
-border without checks. Expiry: an ExpiryHeap over pixel x polarity.
+border without checks. Expiry: an ExpiryHeap over pixel x polarity, one per band of rows (setRowBands), so
+that StereoEventMatcher's row bands each take their own expiries in time order. The map's state depends only
+on which events are active (and their lifetimes and flows), not on the order in which they were activated or
+deactivated: expiries due at the same moment may be taken in any order, band by band.
 
 The per-pixel arrays (activity, nearest vector, lifetime, flow) have a border of the maximum vector length
 around the image, so that the vector offsets are plain index offsets: a border pixel is never active and its
@@ -64,9 +67,19 @@ public:
     // Deactivates every event whose expiry is <= t.
     void expireUntil(int64 t);
 
+    // Splits the expiries into bands of rows [firstRows[b], firstRows[b + 1]) (the last up to the image's
+    // height); firstRows[0] is 0. The default is one band.
+    void setRowBands(const std::vector<int>& firstRows);
+    const std::vector<int>& rowBands() const { return bandFirstRow_; }
+    // Band b's earliest expiry: false when it has none, else its time and its pixel's row.
+    bool earliestExpiry(int band, int64& time, int& row) const;
+    // Deactivates band b's earliest expiry (there must be one).
+    void expireEarliest(int band);
 private:
-    // Index of (x, y, p) in the per-pixel arrays (with their border).
+    // Index of (x, y, p) in the per-pixel arrays (with their border), and the row of an index.
     int id(int x, int y, int p) const { return (p * paddedHeight_ + y + border_) * paddedWidth_ + x + border_; }
+    int rowOf(int id) const { return (id / paddedWidth_) % paddedHeight_ - border_; }
+    ExpiryHeap& heapOfRow(int y) { return expiry_[(size_t)rowBand_[(size_t)y]]; }
     void deactivateId(int id);
     // The nearest active event of pixel id from offset `from` on (NONE: none).
     int scanNearest(int id, int from) const;
@@ -88,7 +101,9 @@ private:
     std::vector<float> lifetime_;
     std::vector<Vec2f> flow_;
     std::vector<uchar> descriptors_;
-    ExpiryHeap expiry_;
+    std::vector<ExpiryHeap> expiry_;  // one per band of rows
+    std::vector<int> bandFirstRow_;   // the bands' first rows
+    std::vector<uchar> rowBand_;      // the band of each row
 };
 
 }  // namespace event

@@ -101,7 +101,9 @@ public:
     /** @brief Enables the prediction shortcut (default true). */
     CV_WRAP virtual bool getUsePrediction() const = 0;
     CV_WRAP virtual void setUsePrediction(bool use) = 0;
-    /** @brief Seed of the RANSAC sampling (default 0): results are deterministic. */
+    /** @brief Seed of the RANSAC sampling (default 0): results are deterministic. An event's samples are drawn
+    from the seed and the event itself (pixel, polarity, time), not from a sequence shared by all events, so
+    they do not depend on how many fits ran before it. */
     CV_WRAP virtual int getSeed() const = 0;
     CV_WRAP virtual void setSeed(int seed) = 0;
 };

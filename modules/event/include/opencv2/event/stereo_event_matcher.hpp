@@ -98,7 +98,8 @@ lifetime (for getActiveDistance() fixed intervals, 25 ms at the defaults), witho
 so that both sensors have something to match against from the start; afterwards such an event is
 inactive, as the paper has it.
 
-Memory is O(sensor pixels): the per-pixel maps, an expiry heap over pixels and the two LifetimeEstimators.
+Memory is O(sensor pixels): the per-pixel maps, an expiry heap over pixels (one per row band with
+setNumThreads()) and the two LifetimeEstimators.
 */
 class CV_EXPORTS_W StereoEventMatcher : public Algorithm
 {
@@ -187,6 +188,15 @@ public:
     measured against 1. The lifetimes output are not scaled. */
     CV_WRAP virtual double getActiveDistance() const = 0;
     CV_WRAP virtual void setActiveDistance(double px) = 0;
+    /** @brief Threads for process() in the per-event modes (default 1; 1..64): the sensor's rows are split
+    into this many bands, each processed on its own thread, split where the packet's events divide evenly.
+    An event close enough to a neighbouring band to touch rows that band's events touch waits until that
+    band has processed everything before it, so the results are identical to one thread's, bit for bit.
+    Bands are at least 2 x (half the aggregation window) + 1 rows tall, which caps the threads on small
+    sensors (10 on a DAVIS240 at the defaults); packets of fewer than 1000 events run on one thread.
+    processEvent() always runs on the calling thread. Not stored by write(). */
+    CV_WRAP virtual int getNumThreads() const = 0;
+    CV_WRAP virtual void setNumThreads(int threads) = 0;
 };
 
 /** @brief "coupled", "decoupled", "fixed" or "sgbm" for a StereoMatchMode. */
