@@ -4,9 +4,12 @@
 // A second table gives, per mode, Mev/s, the per-event latency percentiles (p50 / p99, each event timed on
 // its own through processEvent; FRAME_SGBM: per 33 ms window, as its events wait for their window) and the
 // memory the matcher added (peak resident memory during the run minus the resident memory before it).
+// A third table gives COUPLED and DECOUPLED through process() in 33 ms windows on each of --threads (row
+// bands, StereoEventMatcher::setNumThreads): Mev/s, the speed-up over one thread, and whether every output
+// (disparity, lifetime, flags, flow) is bit for bit the one thread's.
 //
 //   event_stereo_table [--duration-ms 500] [--scenes plane,two_planes,faint_line,cluttered]
-//                      [--shared DIR] [--markdown FILE] [--soak-events N]
+//                      [--shared DIR] [--markdown FILE] [--soak-events N] [--threads 1,2]
 //
 // Simulated scenes come with ground truth; the real TUM pairs in DIR/stereo_dvs128_tum (default
 // ../shared/data) are added when present. Events are generated/read before timing: the times are the
@@ -164,6 +167,35 @@ Result run(const Recording& rec, int mode)
     return r;
 }
 
+// process() over the recording's windows with `threads` row bands: seconds, and every output in `outputs`.
+double runThreads(const Recording& rec, int mode, int threads, std::vector<Mat>& outputs)
+{
+    Ptr<StereoEventMatcher> m = StereoEventMatcher::create(rec.size, mode);
+    m->setNumThreads(threads);
+    outputs.clear();
+    double seconds = 0;
+    for (const std::vector<Event>& ev : rec.windows)
+    {
+        Mat d, lt, fl, flow;
+        const auto t0 = std::chrono::steady_clock::now();
+        m->process(ev, d, lt, fl, noArray(), flow);
+        seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+        for (const Mat& o : { d, lt, fl, flow })
+            outputs.push_back(o);
+    }
+    return seconds;
+}
+
+bool sameBits(const std::vector<Mat>& a, const std::vector<Mat>& b)
+{
+    if (a.size() != b.size())
+        return false;
+    for (size_t i = 0; i < a.size(); i++)
+        if (a[i].size != b[i].size || std::memcmp(a[i].data, b[i].data, a[i].total() * a[i].elemSize()) != 0)
+            return false;
+    return true;
+}
+
 // Streams `events` events through one COUPLED matcher, replaying the recording with its time shifted on
 // every pass; prints the resident memory at every tenth.
 void soak(const Recording& rec, int64 events)
@@ -219,7 +251,7 @@ int main(int argc, char** argv)
 {
     double durationMs = 500;
     int64 soakEvents = 0;
-    std::string scenes = "plane,two_planes,faint_line,cluttered", shared = "../shared/data", markdown;
+    std::string scenes = "plane,two_planes,faint_line,cluttered", shared = "../shared/data", markdown, threadList = "1,2";
     for (int i = 1; i + 1 < argc; i += 2)
     {
         const std::string a = argv[i], v = argv[i + 1];
@@ -228,10 +260,11 @@ int main(int argc, char** argv)
         else if (a == "--shared") shared = v;
         else if (a == "--markdown") markdown = v;
         else if (a == "--soak-events") soakEvents = (int64)std::stod(v);
+        else if (a == "--threads") threadList = v;
         else
         {
             std::cerr << "usage: event_stereo_table [--duration-ms MS] [--scenes a,b,...] [--shared DIR] [--markdown FILE] "
-                         "[--soak-events N]\n";
+                         "[--soak-events N] [--threads 1,2]\n";
             return 2;
         }
     }
@@ -257,8 +290,16 @@ int main(int argc, char** argv)
                  "| COUPLED / DECOUPLED time | COUPLED Mev/s | density / within 1 px: COUPLED | DECOUPLED | FIXED | SGBM |\n"
               << "|---|---|---|---|---|---|---|---|---|---|---|---|\n";
         double coupledSeconds = 0, decoupledSeconds = 0;
-        std::ostringstream speed;
+        std::ostringstream speed, bands;
         speed << "| recording | mode | Mev/s | latency p50 | latency p99 | memory added |\n|---|---|---|---|---|---|\n";
+        bands << "| recording | mode | threads | Mev/s | speed-up | outputs identical to 1 thread |\n|---|---|---|---|---|---|\n";
+        std::vector<int> threadCounts;
+        {
+            std::stringstream t(threadList);
+            std::string item;
+            while (std::getline(t, item, ','))
+                threadCounts.push_back(std::stoi(item));
+        }
         for (const Recording& rec : recordings)
         {
             std::cerr << "running " << rec.name << " (" << rec.events << " events)...\n";
@@ -284,11 +325,26 @@ int main(int argc, char** argv)
                   << num(c.seconds / std::max(1e-12, d.seconds), 2) << " | " << num((double)rec.events / c.seconds / 1e6, 3)
                   << " | " << accuracy(c) << " | " << accuracy(d) << " | " << accuracy(res[STEREO_FIXED_INTERVAL]) << " | "
                   << accuracy(res[STEREO_FRAME_SGBM]) << " |\n";
+            for (int mode : { (int)STEREO_COUPLED, (int)STEREO_DECOUPLED })
+            {
+                std::vector<Mat> first, outputs;
+                double oneThread = 0;
+                for (size_t k = 0; k < threadCounts.size(); k++)
+                {
+                    const double s = runThreads(rec, mode, threadCounts[k], k == 0 ? first : outputs);
+                    if (k == 0)
+                        oneThread = s;
+                    bands << "| " << rec.name << " | " << getStereoModeName(mode) << " | " << threadCounts[k] << " | "
+                          << num((double)rec.events / std::max(1e-12, s) / 1e6, 3) << " | " << num(oneThread / s, 2) << " | "
+                          << (k == 0 ? "-" : sameBits(first, outputs) ? "yes" : "**NO**") << " |\n";
+                }
+            }
         }
         table << "\nCOUPLED / DECOUPLED time over all recordings: " << num(coupledSeconds / std::max(1e-12, decoupledSeconds), 2)
               << " (the paper reports about 0.5)\n\n" << speed.str()
               << "\nPeak resident memory of the whole run (the recordings are held in memory): "
-              << num(bench::residentMiB("VmHWM:"), 1) << " MiB\n";
+              << num(bench::residentMiB("VmHWM:"), 1) << " MiB\n\nprocess() in 33 ms windows, row bands on "
+              << threadList << " threads (speed-up against the first):\n\n" << bands.str();
         std::cout << table.str();
         if (!markdown.empty())
             std::ofstream(markdown) << table.str();
