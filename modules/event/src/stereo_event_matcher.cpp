@@ -132,6 +132,7 @@ public:
         }
     }
 
+    // Smaller packets run on the calling thread: starting the others would cost more than they gain.
     enum { MIN_EVENTS_FOR_BANDS = 1000 };
 
     void processEvent(const Event& e, StereoEventEstimate& est) CV_OVERRIDE
@@ -154,7 +155,7 @@ public:
     }
 
     // processEvent after admit() and the expiries due: the event at rectified pixel r, inside the image.
-    // Reads and writes only rows within rowReach() of r.y, with its own scratch: see processInBands().
+    // Reads and writes only rows within eventRowReach() of r.y, with its own scratch: see processInBands().
     void processAdmitted(const Event& e, Point r, int64 coldStartEnd, MatchScratch& s, StereoEventEstimate& est)
     {
         const int c = e.camera, p = e.p ? 1 : 0;

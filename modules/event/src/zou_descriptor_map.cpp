@@ -70,12 +70,17 @@ void ZouDescriptorMap::reset()
     descriptors_.assign((size_t)stride_ * (size_.height + 2 * margin_) * DESCRIPTOR_BYTES, 0);
     if (bandFirstRow_.empty() || bandFirstRow_.back() >= size_.height)
         bandFirstRow_.assign(1, 0);
+    resetExpiries();
+}
+
+void ZouDescriptorMap::resetExpiries()
+{
     rowBand_.assign((size_t)size_.height, 0);
     for (size_t b = 1; b < bandFirstRow_.size(); b++)
         std::fill(rowBand_.begin() + bandFirstRow_[b], rowBand_.end(), (uchar)b);
     expiry_.resize(bandFirstRow_.size());
     for (ExpiryHeap& heap : expiry_)
-        heap.reset((int)ids);
+        heap.reset((int)active_.size());
 }
 
 void ZouDescriptorMap::setRowBands(const std::vector<int>& firstRows)
@@ -91,13 +96,7 @@ void ZouDescriptorMap::setRowBands(const std::vector<int>& firstRows)
         for (size_t i = 0; i < heap.size(); i++)
             pending.emplace_back(heap.idAt(i), heap.timeAt(i));
     bandFirstRow_ = firstRows;
-    rowBand_.assign((size_t)size_.height, 0);
-    for (size_t b = 1; b < bandFirstRow_.size(); b++)
-        std::fill(rowBand_.begin() + bandFirstRow_[b], rowBand_.end(), (uchar)b);
-    const int ids = (int)active_.size();
-    expiry_.resize(bandFirstRow_.size());
-    for (ExpiryHeap& heap : expiry_)
-        heap.reset(ids);
+    resetExpiries();
     for (const std::pair<int, int64>& e : pending)
         heapOfRow(rowOf(e.first)).set(e.first, e.second);
 }

@@ -81,6 +81,8 @@ private:
     int rowOf(int id) const { return (id / paddedWidth_) % paddedHeight_ - border_; }
     ExpiryHeap& heapOfRow(int y) { return expiry_[(size_t)rowBand_[(size_t)y]]; }
     void deactivateId(int id);
+    // Empty expiry heaps, one per band of bandFirstRow_.
+    void resetExpiries();
     // The nearest active event of pixel id from offset `from` on (NONE: none).
     int scanNearest(int id, int from) const;
     // Calls op(bins) with polarity p's first bin in each descriptor that (x, y)'s vector votes into: the N x N

@@ -192,8 +192,9 @@ public:
     into this many bands, each processed on its own thread, split where the packet's events divide evenly.
     An event close enough to a neighbouring band to touch rows that band's events touch waits until that
     band has processed everything before it, so the results are identical to one thread's, bit for bit.
-    Bands are at least 2 x (half the aggregation window) + 1 rows tall, which caps the threads on small
-    sensors (10 on a DAVIS240 at the defaults); packets of fewer than 1000 events run on one thread.
+    Bands are at least 2 x (the rows an event reaches each way: half the aggregation window at the
+    defaults) + 1 rows tall, which caps the threads on small sensors (10 on a DAVIS240 at the defaults);
+    packets of fewer than 1000 events run on one thread. See doc/performance.md for how and what it gains.
     processEvent() always runs on the calling thread. Not stored by write(). */
     CV_WRAP virtual int getNumThreads() const = 0;
     CV_WRAP virtual void setNumThreads(int threads) = 0;
