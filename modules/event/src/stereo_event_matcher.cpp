@@ -18,6 +18,7 @@
 #include <atomic>
 #include <exception>
 #include <limits>
+#include <memory>
 #include <thread>
 
 namespace cv {
@@ -616,7 +617,7 @@ private:
         unsigned mass = addRect(self, other, r, -h, h, -h, h, s);
         for (;;)
         {
-            int best = 0;  // index into candidates_, which run by disparity: ties go to the smaller disparity
+            int best = 0;  // index into candidates, which run by disparity: ties go to the smaller disparity
             for (int i = 1; i < n; i++)
                 if (cost[(size_t)i] < cost[(size_t)best])
                     best = i;
