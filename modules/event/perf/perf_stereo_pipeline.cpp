@@ -63,6 +63,43 @@ PERF_TEST_P(Event_StereoPipeline, two_planes_window,
     SANITY_CHECK_NOTHING();
 }
 
+// Row bands (StereoEventMatcher::setNumThreads): the same window through process() on 1, 2 and 4 threads, by
+// sensor size, COUPLED and DECOUPLED. The outputs must equal one thread's bit for bit (checked outside the timed
+// part): a speed-up that changed the results would not count.
+static bool sameBits(const Mat& a, const Mat& b)
+{
+    return a.size == b.size && a.type() == b.type() && a.isContinuous() && b.isContinuous() &&
+           memcmp(a.ptr(), b.ptr(), a.total() * a.elemSize()) == 0;
+}
+
+CV_ENUM(BandModeParam, STEREO_COUPLED, STEREO_DECOUPLED)
+typedef tuple<SensorParam, int, BandModeParam> RowBandParams;
+typedef TestBaseWithParam<RowBandParams> Event_StereoRowBands;
+
+PERF_TEST_P(Event_StereoRowBands, two_planes_window,
+            testing::Combine(SensorParam::all(), testing::Values(1, 2, 4), BandModeParam::all()))
+{
+    const SimulatedWindow& w = simulatedWindow(get<0>(GetParam()), 0.0);
+    const int threads = get<1>(GetParam()), mode = get<2>(GetParam());
+    Ptr<StereoEventMatcher> m = StereoEventMatcher::create(w.size, mode);
+    Mat disparity, lifetime, expectedDisparity, expectedLifetime;
+    m->process(w.warmUp, disparity, lifetime);
+    m->process(w.window, expectedDisparity, expectedLifetime);
+    m->setNumThreads(threads);
+    RecordProperty("events", (int)w.window.size());
+    while (next())
+    {
+        m->reset();
+        m->process(w.warmUp, disparity, lifetime);
+        startTimer();
+        m->process(w.window, disparity, lifetime);
+        stopTimer();
+        ASSERT_TRUE(sameBits(disparity, expectedDisparity)) << threads << " threads changed the disparities";
+        ASSERT_TRUE(sameBits(lifetime, expectedLifetime)) << threads << " threads changed the lifetimes";
+    }
+    SANITY_CHECK_NOTHING();
+}
+
 // Per event, the incremental API as a live loop calls it (same window, one processEvent per event).
 typedef TestBaseWithParam<StereoModeParam> Event_StereoPerEvent;
 
