@@ -3,9 +3,12 @@
 // of this distribution and at http://opencv.org/license.html.
 
 // Reading 1 M events through EventCapture, per writable format (files written once by EventWriter, on a
-// DAVIS346-sized sensor at 1 Mev/s). perf/event_io_bench also covers the real sample of every format.
+// DAVIS346-sized sensor at 1 Mev/s); and reading the real sample of every other format in ../shared/data
+// (skipped when absent). perf/event_io_bench prints the same as a table.
 
 #include "perf_precomp.hpp"
+
+#include <sys/stat.h>
 
 namespace opencv_test { namespace {
 
@@ -48,6 +51,55 @@ PERF_TEST_P(Event_Reader, one_million_events, ReadFormat::all())
     }
     std::remove(path.c_str());
     ASSERT_EQ((size_t)n, events);
+    SANITY_CHECK_NOTHING();
+}
+
+// The real recordings of ../shared/data/README.md, one per reader, with the event counts it documents (the
+// property "events" gives Mev/s from the time). A stereo recording in one file (Fan: a camera column) is read
+// by one reader per camera, each parsing the whole file, so that the merge keeps memory bounded when the file
+// stores one camera after the other: its lines are parsed twice.
+struct SharedRecording
+{
+    const char* path;
+    int events;
+};
+
+static const SharedRecording sharedRecordings[] = {
+    { "format_samples/aestream_davis346.aedat4", 117667 },  // AEDAT4, LZ4
+    { "format_samples/tonic_sample_dvxplorer.aedat4", 111954 },
+    { "format_samples/evt2_sample.raw", 539481 },            // Prophesee EVT 2.0
+    { "format_samples/evt3_sample.raw", 219596 },            // Prophesee EVT 3.0
+    { "format_samples/tonic_sample_ncars.dat", 2009 },       // Prophesee DAT
+    { "format_samples/ecpy_test_events_1_ros1.bag", 343474 },  // ROS1 bag, evt3 packets
+    { "format_samples/ros2_libcaer_rollover", 334331 },      // ROS2 bag, libcaer packets
+    { "stereo_dvs128_tum/Fan_disp8.dat", 136233 },           // stereo text
+};
+
+typedef TestBaseWithParam<int> Event_ReaderSample;
+
+PERF_TEST_P(Event_ReaderSample, shared_recording, testing::Range(0, (int)(sizeof(sharedRecordings) / sizeof(sharedRecordings[0]))))
+{
+    const SharedRecording& r = sharedRecordings[GetParam()];
+    const char* env = std::getenv("OPENCV_EVENT_SHARED_DATA");
+    const std::string path = std::string(env && *env ? env : OPENCV_EVENT_SHARED_DATA_DEFAULT) + "/" + r.path;
+    struct stat st;
+    if (::stat(path.c_str(), &st) != 0)
+        throw SkipTestException("shared recording " + path + " is absent (set OPENCV_EVENT_SHARED_DATA)");
+    RecordProperty("recording", r.path);
+    RecordProperty("events", r.events);
+    size_t events = 0;
+    std::vector<Event> batch;
+    while (next())
+    {
+        EventCapture cap;
+        startTimer();
+        cap.open(path);
+        events = 0;
+        while (cap.read(batch))
+            events += batch.size();
+        stopTimer();
+    }
+    ASSERT_EQ((size_t)r.events, events) << path;
     SANITY_CHECK_NOTHING();
 }
 
