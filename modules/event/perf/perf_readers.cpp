@@ -12,6 +12,16 @@
 
 namespace opencv_test { namespace {
 
+// Opens path and reads it to the end in batches; returns the events read.
+static size_t readAll(EventCapture& cap, const std::string& path, std::vector<Event>& batch)
+{
+    cap.open(path);
+    size_t events = 0;
+    while (cap.read(batch))
+        events += batch.size();
+    return events;
+}
+
 enum { READ_TEXT, READ_AEDAT4_RAW, READ_AEDAT4_LZ4, READ_AEDAT4_ZSTD };
 CV_ENUM(ReadFormat, READ_TEXT, READ_AEDAT4_RAW, READ_AEDAT4_LZ4, READ_AEDAT4_ZSTD)
 
@@ -43,10 +53,7 @@ PERF_TEST_P(Event_Reader, one_million_events, ReadFormat::all())
     {
         EventCapture cap;
         startTimer();
-        cap.open(path);
-        events = 0;
-        while (cap.read(batch))
-            events += batch.size();
+        events = readAll(cap, path, batch);
         stopTimer();
     }
     std::remove(path.c_str());
@@ -93,10 +100,7 @@ PERF_TEST_P(Event_ReaderSample, shared_recording, testing::Range(0, (int)(sizeof
     {
         EventCapture cap;
         startTimer();
-        cap.open(path);
-        events = 0;
-        while (cap.read(batch))
-            events += batch.size();
+        events = readAll(cap, path, batch);
         stopTimer();
     }
     ASSERT_EQ((size_t)r.events, events) << path;

@@ -63,9 +63,10 @@ PERF_TEST_P(Event_StereoPipeline, two_planes_window,
     SANITY_CHECK_NOTHING();
 }
 
-// Row bands (StereoEventMatcher::setNumThreads): the same window through process() on 1, 2 and 4 threads, by
-// sensor size, COUPLED and DECOUPLED. The outputs must equal one thread's bit for bit (checked outside the timed
-// part): a speed-up that changed the results would not count.
+// Row bands (StereoEventMatcher::setNumThreads): the same window through process() on 2 and 4 threads, by
+// sensor size, COUPLED and DECOUPLED; one thread is Event_StereoPipeline's case without background activity.
+// The outputs must equal one thread's bit for bit (checked outside the timed part): a speed-up that changed
+// the results would not count.
 static bool sameBits(const Mat& a, const Mat& b)
 {
     return a.size == b.size && a.type() == b.type() && a.isContinuous() && b.isContinuous() &&
@@ -77,7 +78,7 @@ typedef tuple<SensorParam, int, BandModeParam> RowBandParams;
 typedef TestBaseWithParam<RowBandParams> Event_StereoRowBands;
 
 PERF_TEST_P(Event_StereoRowBands, two_planes_window,
-            testing::Combine(SensorParam::all(), testing::Values(1, 2, 4), BandModeParam::all()))
+            testing::Combine(SensorParam::all(), testing::Values(2, 4), BandModeParam::all()))
 {
     const SimulatedWindow& w = simulatedWindow(get<0>(GetParam()), 0.0);
     const int threads = get<1>(GetParam()), mode = get<2>(GetParam());
