@@ -376,8 +376,12 @@ private:
     void predictNeighbour(const Event& e, int p, double a, double b)
     {
         const double angle = std::atan2(b, a);  // the direction of motion: along the gradient
-        const int k = (int)std::lround(angle / (CV_PI / 4));
-        const int dx = (int)std::lround(std::cos(k * CV_PI / 4)), dy = (int)std::lround(std::sin(k * CV_PI / 4));
+        if (!std::isfinite(angle))
+            return;  // no direction (a flow given to insertEvent that overflows): nothing to predict
+        const int k = (int)std::lround(angle / (CV_PI / 4));  // -4..4, in steps of 45 degrees
+        // The neighbour in direction k: cos and sin of k x 45 degrees rounded to integers.
+        static const int kDx[9] = { -1, -1, 0, 1, 1, 1, 0, -1, -1 }, kDy[9] = { 0, -1, -1, -1, 0, 1, 1, 1, 0 };
+        const int dx = kDx[k + 4], dy = kDy[k + 4];
         const int x = e.x + dx, y = e.y + dy;
         if (x < 0 || x >= size_.width || y < 0 || y >= size_.height)
             return;

@@ -33,18 +33,20 @@ struct MatchResult
     int flags = 0;          // STEREO_AMBIGUOUS / STEREO_NO_COUNTERPART when no disparity
 };
 
+// An active event of the matched window: its lifetime and its index in the map's per-pixel arrays.
 struct Neighbour
 {
     float lifetime;
-    int x, y;
+    int index;
 };
 
 // The working memory of matching one event (one per thread): the candidates as disparity index (disparity -
 // min) in increasing order, the byte offset of each one's descriptor in the other sensor from the event's
-// column, and their costs; the matched window's lifetimes; the left-right check's disparities; the lifetime
-// estimators' scratch, per camera.
+// column, and their costs (the first `count` of each, sized for the whole disparity range); the matched
+// window's lifetimes; the left-right check's disparities; the lifetime estimators' scratch, per camera.
 struct MatchScratch
 {
+    int count = 0;
     std::vector<int> candidates;
     std::vector<ptrdiff_t> offsets;
     std::vector<unsigned> cost;
@@ -235,6 +237,7 @@ public:
         img.setTo(Scalar::all(0));
         const Mat lut = colourLut();
         const std::vector<PixelEstimate>& last = lastEstimate_[camera];
+        const std::vector<int64>& lastTime = lastEventTime_[camera];
         for (int y = 0; y < size_.height; y++)
         {
             Vec3b* row = img.ptr<Vec3b>(y);
@@ -242,7 +245,7 @@ public:
             {
                 const size_t i = (size_t)y * size_.width + x;
                 const PixelEstimate& q = last[i];
-                if (q.disparity < 0 || !(q.t <= t && t < (double)q.until))
+                if (q.disparity < 0 || !((double)lastTime[i] <= t && t < (double)q.until))
                     continue;
                 row[x] = lut.at<Vec3b>(colourIndex(q.disparity));
             }
@@ -270,6 +273,7 @@ public:
             maps_[c].configure(size_, descriptorWindow_, maxVectorLength_, margin);
             estimators_[c]->reset();
             lastEstimate_[c].assign((size_t)size_.area(), PixelEstimate());
+            lastEventTime_[c].assign((size_t)size_.area(), 0);
         }
         frames_.configure(size_, minDisparity_, maxDisparity_, frameWindow_);
         lastTime_ = std::numeric_limits<int64>::min();
@@ -282,9 +286,9 @@ public:
     {
         s.neighbours.resize((size_t)costWindow_ * costWindow_);
         const size_t range = (size_t)(maxDisparity_ - minDisparity_ + 1);
-        s.candidates.reserve(range);
-        s.offsets.reserve(range);
-        s.cost.reserve(range);
+        s.candidates.resize(range);
+        s.offsets.resize(range);
+        s.cost.resize(range);
     }
 
     void setCalibration(const StereoCalibration& calibration) CV_OVERRIDE
@@ -482,12 +486,13 @@ public:
     String getDefaultName() const CV_OVERRIDE { return "StereoEventMatcher"; }
 
 private:
-    // Per pixel of each sensor, its last event's time, the end of its activity and its disparity (-1: none),
-    // for the left-right check and for renderDisparity. One struct, not three arrays: the check reads
-    // disparity and end together, and every event writes all three (one cache line instead of three).
+    // Per pixel of each sensor, the end of its last event's activity and its disparity (-1: none), for the
+    // left-right check and for renderDisparity. One struct: the check reads both together. The event's time,
+    // which only the rendering reads, lies apart (lastEventTime_), so that a row of the check spans fewer
+    // cache lines (16 bytes per pixel instead of 24).
     struct PixelEstimate
     {
-        int64 t = 0, until = 0;
+        int64 until = 0;
         float disparity = -1.f;
     };
 
@@ -560,7 +565,7 @@ private:
         // Candidate i's rectangle is this one shifted by its disparity along the row: offsets[i] bytes.
         return rectSadBatch_(self.descriptor(r.x + x0, r.y + y0), other.descriptor(r.x + x0, r.y + y0),
                              self.descriptorRowStep(), other.descriptorRowStep(), s.offsets.data(),
-                             (int)s.candidates.size(), x1 - x0 + 1, y1 - y0 + 1, s.cost.data());
+                             s.count, x1 - x0 + 1, y1 - y0 + 1, s.cost.data());
     }
 
     // Clips the rectangle [x0, x1] x [y0, y1] relative to the event's pixel r to the image; false when nothing is
@@ -591,42 +596,50 @@ private:
         const ZouDescriptorMap& self = maps_[c];
         const ZouDescriptorMap& other = maps_[1 - c];
         const int sign = c == CAMERA_LEFT ? -1 : 1;  // left x_l matches right x_l - d; right x_r matches left x_r + d
-        std::vector<int>& candidates = s.candidates;
-        std::vector<unsigned>& cost = s.cost;
-        candidates.clear();
-        s.offsets.clear();
+        int* const candidates = s.candidates.data();
+        ptrdiff_t* const offsets = s.offsets.data();
+        unsigned* const cost = s.cost.data();
         // Disparity indices k whose column xo = r.x + sign * (min + k) lies in the other image; there, a candidate
-        // is a column where the other sensor has structure of this polarity.
+        // is a column where the other sensor has structure of this polarity. Every k is written and the count
+        // advances past the candidates: no branch on the (random) activity pattern.
         const int kEnd = std::min(maxDisparity_, sign < 0 ? r.x : size_.width - 1 - r.x) - minDisparity_ + 1;
         const uchar* structure = other.nearestRow(r.y, p);
         const int x0 = r.x + sign * minDisparity_;
+        const ptrdiff_t offsetStep = (ptrdiff_t)sign * ZouDescriptorMap::DESCRIPTOR_BYTES;
+        int n = 0;
         for (int k = 0; k < kEnd; k++)
-            if (structure[x0 + sign * k] != ZouDescriptorMap::NONE)
-            {
-                candidates.push_back(k);
-                s.offsets.push_back((ptrdiff_t)sign * (minDisparity_ + k) * ZouDescriptorMap::DESCRIPTOR_BYTES);
-            }
-        const int n = (int)candidates.size();
+        {
+            candidates[n] = k;
+            n += structure[x0 + sign * k] != ZouDescriptorMap::NONE;
+        }
+        for (int i = 0; i < n; i++)
+            offsets[i] = (minDisparity_ + candidates[i]) * offsetStep;
+        s.count = n;
         if (n == 0)
         {
             m.flags = STEREO_NO_COUNTERPART;
             return m;
         }
-        cost.assign((size_t)n, 0u);
+        std::fill_n(cost, n, 0u);
         int h = costWindow_ / 2;
         unsigned mass = addRect(self, other, r, -h, h, -h, h, s);
         for (;;)
         {
             int best = 0;  // index into candidates, which run by disparity: ties go to the smaller disparity
             for (int i = 1; i < n; i++)
-                if (cost[(size_t)i] < cost[(size_t)best])
+                if (cost[i] < cost[best])
                     best = i;
-            const int kBest = candidates[(size_t)best];
+            const int kBest = candidates[best];
+            // The candidates within one pixel of the best are next to it (they run by disparity, one each):
+            // the runner-up is the cheapest outside [lo, hi].
+            const int lo = best > 0 && candidates[best - 1] == kBest - 1 ? best - 1 : best;
+            const int hi = best < n - 1 && candidates[best + 1] == kBest + 1 ? best + 1 : best;
             unsigned second = std::numeric_limits<unsigned>::max();
-            for (int i = 0; i < n; i++)
-                if (std::abs(candidates[(size_t)i] - kBest) > 1)
-                    second = std::min(second, cost[(size_t)i]);
-            const unsigned bestCost = cost[(size_t)best];
+            for (int i = 0; i < lo; i++)
+                second = std::min(second, cost[i]);
+            for (int i = hi + 1; i < n; i++)
+                second = std::min(second, cost[i]);
+            const unsigned bestCost = cost[best];
             // Unique: clearly better than every candidate further than one pixel away, and clearly better than
             // no match. "No counterpart (yet)" is one more hypothesis, with the cost of matching against nothing
             // (the window's mass); a winner that only just beats it is most often a neighbour of a counterpart
@@ -649,10 +662,9 @@ private:
             {
                 double d = minDisparity_ + kBest;
                 // Candidates run by disparity: the neighbours, when they are candidates, are next to the best.
-                if (best > 0 && best < n - 1 && candidates[(size_t)best - 1] == kBest - 1 &&
-                    candidates[(size_t)best + 1] == kBest + 1)
+                if (lo == best - 1 && hi == best + 1)
                 {
-                    const double cm = cost[(size_t)best - 1], c0 = bestCost, cp = cost[(size_t)best + 1];
+                    const double cm = cost[best - 1], c0 = bestCost, cp = cost[best + 1];
                     const double denom = cm + cp - 2 * c0;
                     if (denom > 0)
                         d += std::max(-0.5, std::min(0.5, 0.5 * (cm - cp) / denom));
@@ -720,13 +732,15 @@ private:
         Neighbour* const first = s.neighbours.data();
         Neighbour* end = first;
         const int x0 = std::max(0, x - h), x1 = std::min(size_.width - 1, x + h);
+        const float* const lifetimes = map.lifetimes();
         for (int yy = std::max(0, y - h); yy <= std::min(size_.height - 1, y + h); yy++)
         {
-            const float* row = map.lifetimeRow(yy, p);
-            for (int xx = x0; xx <= x1; xx++)
+            const int i1 = map.lifetimeIndex(x1, yy, p);
+            for (int i = map.lifetimeIndex(x0, yy, p); i <= i1; i++)
             {
-                *end = Neighbour{ row[xx], xx, yy };
-                end += row[xx] > 0;
+                const float v = lifetimes[i];
+                *end = Neighbour{ v, i };
+                end += v > 0;
             }
         }
         if (end == first)
@@ -735,14 +749,15 @@ private:
         std::nth_element(first, first + mid, end, [](const Neighbour& a, const Neighbour& b) { return a.lifetime < b.lifetime; });
         const Neighbour& q = first[mid];
         lifetime = q.lifetime;
-        flow = map.flow(q.x, q.y, p);
+        flow = map.flowAt(q.index);
         return true;
     }
 
     void remember(int c, Point r, int64 t, int64 activeFor, float disparity)
     {
-        PixelEstimate& q = lastEstimate_[c][(size_t)r.y * size_.width + r.x];
-        q.t = t;
+        const size_t i = (size_t)r.y * size_.width + r.x;
+        PixelEstimate& q = lastEstimate_[c][i];
+        lastEventTime_[c][i] = t;
         q.until = timeAfter(t, activeFor);
         q.disparity = disparity;
     }
@@ -1002,6 +1017,7 @@ private:
     ZouDescriptorMap maps_[2];
     FrameSgbmMatcher frames_;
     std::vector<PixelEstimate> lastEstimate_[2];
+    std::vector<int64> lastEventTime_[2];
     int64 lastTime_ = std::numeric_limits<int64>::min();
     int64 coldStartEnd_ = 0;  // the end of the cold start: see admit()
     // The cost kernel for this CPU (candidates' costs and window masses), fetched once.

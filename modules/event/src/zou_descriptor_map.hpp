@@ -56,10 +56,14 @@ public:
     // Row y of hasStructure as codes: NONE where no active event of polarity p is within reach.
     const uchar* nearestRow(int y, int p) const { return &nearest_[(size_t)id(0, y, p)]; }
     float lifetime(int x, int y, int p) const { return lifetime_[id(x, y, p)]; }
-    // Row y of the lifetimes of polarity p: > 0 exactly where an active event has a lifetime (an inactive
-    // pixel's is 0), so that a window can be scanned on one array.
-    const float* lifetimeRow(int y, int p) const { return &lifetime_[(size_t)id(0, y, p)]; }
+    // The lifetimes of every pixel and polarity, at lifetimeIndex(x, y, p): > 0 exactly where an active event
+    // has a lifetime (an inactive pixel's is 0), so that a window can be scanned on one array. A row's pixels
+    // are consecutive.
+    const float* lifetimes() const { return lifetime_.data(); }
+    int lifetimeIndex(int x, int y, int p) const { return id(x, y, p); }
     Vec2f flow(int x, int y, int p) const { return flow_[id(x, y, p)]; }
+    // The flow at lifetimeIndex(x, y, p).
+    Vec2f flowAt(int index) const { return flow_[(size_t)index]; }
 
     // Makes the event at (x, y, p) the pixel's active one until expiry (exclusive) [us].
     void activate(int x, int y, int p, int64 expiry, float lifetime, const Vec2f& flow);
