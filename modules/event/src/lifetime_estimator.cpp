@@ -377,7 +377,7 @@ private:
     {
         const double angle = std::atan2(b, a);  // the direction of motion: along the gradient
         if (!std::isfinite(angle))
-            return;  // no direction (a flow given to insertEvent that overflows): nothing to predict
+            return;  // no direction (an infinite flow given to insertEvent): nothing to predict
         const int k = (int)std::lround(angle / (CV_PI / 4));  // -4..4, in steps of 45 degrees
         // The neighbour in direction k: cos and sin of k x 45 degrees rounded to integers.
         static const int kDx[9] = { -1, -1, 0, 1, 1, 1, 0, -1, -1 }, kDy[9] = { 0, -1, -1, -1, 0, 1, 1, 1, 0 };
@@ -388,7 +388,10 @@ private:
         Prediction& q = predictions_[index(x, y, p)];
         q.a = (float)a;
         q.b = (float)b;
-        const int64 step = (int64)std::llround(1000.0 * (a * dx + b * dy));  // the plane's time to that pixel
+        const double stepUs = 1000.0 * (a * dx + b * dy);  // the plane's time to that pixel
+        if (!(std::abs(stepUs) < 9e18))
+            return;  // an edge too slow to reach it in any time an int64 holds (a tiny flow given to insertEvent)
+        const int64 step = (int64)std::llround(stepUs);
         q.t = step >= 0 ? timeAfter(e.t, step) : timeBefore(e.t, -step);
         q.valid = true;
     }

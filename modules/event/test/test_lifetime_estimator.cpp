@@ -140,6 +140,34 @@ TEST(Event_Lifetime, prediction_shortcut_serves_events_and_keeps_the_result)
     EXPECT_LT(b.medianLifetimeError, 0.05);
 }
 
+// insertEvent takes a flow from elsewhere (a stereo match, the caller): it predicts the neighbour the edge moves
+// to, like a fitted plane, and a flow with no usable direction or time predicts nothing.
+TEST(Event_Lifetime, inserted_flow_predicts_the_neighbour_unless_it_has_no_finite_plane)
+{
+    Ptr<LifetimeEstimator> est = LifetimeEstimator::create(Size(32, 32));
+    const int64 t0 = 1000000;
+    Vec2f flow;
+    int status = -1;
+    // 1000 px/s along +x: the edge reaches (11, 10) 1 ms later, where the prediction serves its event.
+    est->insertEvent(Event(t0, 10, 10, 1), 1000.f, Vec2f(1000.f, 0.f));
+    const float lifetime = est->processEvent(Event(t0 + 1000, 11, 10, 1), flow, status);
+    EXPECT_EQ(LIFETIME_PREDICTED, status);
+    EXPECT_NEAR(1000.f, lifetime, 1e-3f);
+    EXPECT_NEAR(1000.f, flow[0], 1e-3f);
+    // An infinite flow has no direction (inf / inf), and 1e-40 px/s puts the neighbour's time 1e46 us away:
+    // neither may predict anything, so the neighbour's event is fitted, and on an otherwise empty surface it is
+    // noise. Without the checks the time computation overflows an int64, which the sanitizers ctest (UBSan)
+    // aborts on; a plain build would see noise either way.
+    for (const Vec2f& extreme : { Vec2f(std::numeric_limits<float>::infinity(), 0.f), Vec2f(1e-40f, 0.f) })
+    {
+        est->reset();
+        est->insertEvent(Event(t0, 10, 10, 1), 1000.f, extreme);
+        status = -1;
+        EXPECT_EQ(0.f, est->processEvent(Event(t0 + 1000, 11, 10, 1), flow, status)) << extreme;
+        EXPECT_EQ(LIFETIME_NOISE, status) << extreme;
+    }
+}
+
 TEST(Event_Lifetime, batch_and_incremental_apis_agree)
 {
     const std::vector<Event> ev = movingEdge(Size(24, 24), 150.0, 1.0, 0.05, 0.1, 7);
