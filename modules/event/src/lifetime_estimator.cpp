@@ -385,12 +385,12 @@ private:
         const int x = e.x + dx, y = e.y + dy;
         if (x < 0 || x >= size_.width || y < 0 || y >= size_.height)
             return;
-        Prediction& q = predictions_[index(x, y, p)];
-        q.a = (float)a;
-        q.b = (float)b;
         const double stepUs = 1000.0 * (a * dx + b * dy);  // the plane's time to that pixel
         if (!(std::abs(stepUs) < 9e18))
             return;  // an edge too slow to reach it in any time an int64 holds (a tiny flow given to insertEvent)
+        Prediction& q = predictions_[index(x, y, p)];
+        q.a = (float)a;
+        q.b = (float)b;
         const int64 step = (int64)std::llround(stepUs);
         q.t = step >= 0 ? timeAfter(e.t, step) : timeBefore(e.t, -step);
         q.valid = true;
