@@ -7,6 +7,7 @@
 
 #include "opencv2/ts.hpp"
 #include "opencv2/event.hpp"
+#include "../test/test_common.hpp"
 
 namespace opencv_test {
 using namespace cv::event;

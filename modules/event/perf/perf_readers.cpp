@@ -8,8 +8,6 @@
 
 #include "perf_precomp.hpp"
 
-#include <sys/stat.h>
-
 namespace opencv_test { namespace {
 
 // Opens path and reads it to the end in batches; returns the events read.
@@ -87,11 +85,7 @@ typedef TestBaseWithParam<int> Event_ReaderSample;
 PERF_TEST_P(Event_ReaderSample, shared_recording, testing::Range(0, (int)(sizeof(sharedRecordings) / sizeof(sharedRecordings[0]))))
 {
     const SharedRecording& r = sharedRecordings[GetParam()];
-    const char* env = std::getenv("OPENCV_EVENT_SHARED_DATA");
-    const std::string path = std::string(env && *env ? env : OPENCV_EVENT_SHARED_DATA_DEFAULT) + "/" + r.path;
-    struct stat st;
-    if (::stat(path.c_str(), &st) != 0)
-        throw SkipTestException("shared recording " + path + " is absent (set OPENCV_EVENT_SHARED_DATA)");
+    const std::string path = requireSharedData(r.path);
     RecordProperty("recording", r.path);
     RecordProperty("events", r.events);
     size_t events = 0;

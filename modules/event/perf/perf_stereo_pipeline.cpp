@@ -65,13 +65,8 @@ PERF_TEST_P(Event_StereoPipeline, two_planes_window,
 
 // Row bands (StereoEventMatcher::setNumThreads): the same window through process() on 2 and 4 threads, by
 // sensor size, COUPLED and DECOUPLED; one thread is Event_StereoPipeline's case without background activity.
-// The outputs must equal one thread's bit for bit (checked outside the timed part): a speed-up that changed
-// the results would not count.
-static bool sameBits(const Mat& a, const Mat& b)
-{
-    return a.size == b.size && a.type() == b.type() && a.isContinuous() && b.isContinuous() &&
-           memcmp(a.ptr(), b.ptr(), a.total() * a.elemSize()) == 0;
-}
+// The outputs must equal one thread's bit for bit (sameBits, checked outside the timed part): a speed-up that
+// changed the results would not count.
 
 CV_ENUM(BandModeParam, STEREO_COUPLED, STEREO_DECOUPLED)
 typedef tuple<SensorParam, int, BandModeParam> RowBandParams;

@@ -7,29 +7,16 @@
 
 #include "opencv2/ts.hpp"
 #include "opencv2/event.hpp"
+#include "test_common.hpp"
 
 #include <cstdio>
 #include <fstream>
-#include <sys/stat.h>
 #include <map>
 #include <numeric>
 
 namespace opencv_test {
 using namespace cv::event;
 using cv::event::Event;  // perf:: and cv::cuda also have an Event
-
-/** Path of a real recording under ../shared/data (or $OPENCV_EVENT_SHARED_DATA); the test is skipped, with
-a message, when it is absent: the recordings are never part of the repository. */
-inline std::string requireSharedData(const std::string& relative)
-{
-    const char* env = std::getenv("OPENCV_EVENT_SHARED_DATA");
-    const std::string root = env && *env ? std::string(env) : std::string(OPENCV_EVENT_SHARED_DATA_DEFAULT);
-    const std::string path = root + "/" + relative;
-    struct stat st;
-    if (::stat(path.c_str(), &st) != 0)
-        throw SkipTestException("shared recording " + path + " is absent (set OPENCV_EVENT_SHARED_DATA)");
-    return path;
-}
 
 /** Every event @p cap delivers, read in batches of @p batch events (batches that need not line up with the
 file's own packets). */

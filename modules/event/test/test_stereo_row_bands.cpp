@@ -34,12 +34,6 @@ RunOutputs runMatcher(const std::vector<std::vector<Event>>& packets, Size size,
     return out;
 }
 
-// Bit for bit: the same bytes, so that -0 against 0 or two NaNs would count as different too.
-bool sameBits(const Mat& a, const Mat& b)
-{
-    return a.size == b.size && a.type() == b.type() && std::memcmp(a.data, b.data, a.total() * a.elemSize()) == 0;
-}
-
 int differingOutputs(const RunOutputs& a, const RunOutputs& b)
 {
     int differ = a.packets.size() == b.packets.size() ? 0 : 1;
