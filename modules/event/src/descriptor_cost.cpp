@@ -69,24 +69,26 @@ __attribute__((target("avx2"))) static inline unsigned sumLanesAvx2(__m256i v)
 
 // K candidates in one pass over the rectangle: each descriptor of a is loaded once and compared with the K
 // candidates' descriptors, one accumulator (4 x 64-bit lanes) per candidate. With MASS, also the SAD of a
-// against zeros (its mass), returned; K may then be 0.
-template <int K, bool MASS>
+// against zeros (its mass), returned; K may then be 0. CHUNKS is the number of full 32-byte chunks per row when
+// known at compile time (then the row is unrolled), -1 otherwise. The candidates' offsets stay in registers and
+// address from one row pointer, so a row advances one pointer per side, not one per candidate.
+template <int K, bool MASS, int CHUNKS>
 __attribute__((target("avx2"))) static inline unsigned rectSadBlockAvx2(const uchar* a, const uchar* b, size_t aStep,
                                                                        size_t bStep, const ptrdiff_t* offsets,
                                                                        int width, int height, unsigned* sums)
 {
     const __m256i zero = _mm256_setzero_si256();
     __m256i acc[K > 0 ? K : 1], accMass = zero;
-    const uchar* pb[K > 0 ? K : 1];
+    ptrdiff_t off[K > 0 ? K : 1];
     for (int k = 0; k < K; k++)
     {
         acc[k] = zero;
-        pb[k] = b + offsets[k];
+        off[k] = offsets[k];
     }
-    const int bytes = width * DESCRIPTOR_BYTES, full = bytes & ~31;
+    const int bytes = width * DESCRIPTOR_BYTES, full = CHUNKS >= 0 ? CHUNKS * 32 : bytes & ~31;
     // The tail's 64-bit lanes: 1, 2 or 3 of the 4 (none when the row is a multiple of 32 bytes).
     const __m256i tail = _mm256_cmpgt_epi64(_mm256_set1_epi64x((bytes - full) / 8), _mm256_setr_epi64x(0, 1, 2, 3));
-    for (int y = 0; y < height; y++, a += aStep)
+    for (int y = 0; y < height; y++, a += aStep, b += bStep)
     {
         for (int x = 0; x < full; x += 32)
         {
@@ -94,7 +96,7 @@ __attribute__((target("avx2"))) static inline unsigned rectSadBlockAvx2(const uc
             if (MASS)
                 accMass = _mm256_add_epi64(accMass, _mm256_sad_epu8(s, zero));
             for (int k = 0; k < K; k++)
-                acc[k] = _mm256_add_epi64(acc[k], _mm256_sad_epu8(s, _mm256_loadu_si256((const __m256i*)(pb[k] + x))));
+                acc[k] = _mm256_add_epi64(acc[k], _mm256_sad_epu8(s, _mm256_loadu_si256((const __m256i*)(b + off[k] + x))));
         }
         if (full < bytes)
         {
@@ -104,10 +106,8 @@ __attribute__((target("avx2"))) static inline unsigned rectSadBlockAvx2(const uc
                 accMass = _mm256_add_epi64(accMass, _mm256_sad_epu8(s, zero));
             for (int k = 0; k < K; k++)
                 acc[k] = _mm256_add_epi64(
-                    acc[k], _mm256_sad_epu8(s, _mm256_maskload_epi64((const long long*)(pb[k] + full), tail)));
+                    acc[k], _mm256_sad_epu8(s, _mm256_maskload_epi64((const long long*)(b + off[k] + full), tail)));
         }
-        for (int k = 0; k < K; k++)
-            pb[k] += bStep;
     }
     for (int k = 0; k < K; k++)
         sums[k] += sumLanesAvx2(acc[k]);
@@ -120,34 +120,50 @@ __attribute__((target("avx2"))) static unsigned rectSadAvx2(const uchar* a, cons
 {
     const ptrdiff_t offset = 0;
     unsigned sum = 0;
-    rectSadBlockAvx2<1, false>(a, b, aStep, bStep, &offset, width, height, &sum);
+    rectSadBlockAvx2<1, false, -1>(a, b, aStep, bStep, &offset, width, height, &sum);
     return sum;
 }
 
-// The first block also sums the mass, so that a's descriptors are read once for it too.
-__attribute__((target("avx2"))) static unsigned rectSadBatchAvx2(const uchar* a, const uchar* b, size_t aStep,
-                                                                 size_t bStep, const ptrdiff_t* offsets, int n,
-                                                                 int width, int height, unsigned* sums)
+// All candidates, four at a time; the first block also sums the mass, so that a's descriptors are read once for
+// it too.
+template <int CHUNKS>
+__attribute__((target("avx2"))) static unsigned rectSadBatchBlocksAvx2(const uchar* a, const uchar* b, size_t aStep,
+                                                                        size_t bStep, const ptrdiff_t* offsets, int n,
+                                                                        int width, int height, unsigned* sums)
 {
     int i = n >= 4 ? 4 : n >= 2 ? 2 : n;  // candidates in the first block
     unsigned mass = 0;
     switch (i)
     {
-    case 4: mass = rectSadBlockAvx2<4, true>(a, b, aStep, bStep, offsets, width, height, sums); break;
-    case 2: mass = rectSadBlockAvx2<2, true>(a, b, aStep, bStep, offsets, width, height, sums); break;
-    case 1: mass = rectSadBlockAvx2<1, true>(a, b, aStep, bStep, offsets, width, height, sums); break;
-    default: return rectSadBlockAvx2<0, true>(a, b, aStep, bStep, offsets, width, height, sums);
+    case 4: mass = rectSadBlockAvx2<4, true, CHUNKS>(a, b, aStep, bStep, offsets, width, height, sums); break;
+    case 2: mass = rectSadBlockAvx2<2, true, CHUNKS>(a, b, aStep, bStep, offsets, width, height, sums); break;
+    case 1: mass = rectSadBlockAvx2<1, true, CHUNKS>(a, b, aStep, bStep, offsets, width, height, sums); break;
+    default: return rectSadBlockAvx2<0, true, CHUNKS>(a, b, aStep, bStep, offsets, width, height, sums);
     }
     for (; i + 4 <= n; i += 4)
-        rectSadBlockAvx2<4, false>(a, b, aStep, bStep, offsets + i, width, height, sums + i);
+        rectSadBlockAvx2<4, false, CHUNKS>(a, b, aStep, bStep, offsets + i, width, height, sums + i);
     if (i + 2 <= n)
     {
-        rectSadBlockAvx2<2, false>(a, b, aStep, bStep, offsets + i, width, height, sums + i);
+        rectSadBlockAvx2<2, false, CHUNKS>(a, b, aStep, bStep, offsets + i, width, height, sums + i);
         i += 2;
     }
     if (i < n)
-        rectSadBlockAvx2<1, false>(a, b, aStep, bStep, offsets + i, width, height, sums + i);
+        rectSadBlockAvx2<1, false, CHUNKS>(a, b, aStep, bStep, offsets + i, width, height, sums + i);
     return mass;
+}
+
+// The default 9 x 9 cost window's rows (216 bytes: six chunks and a 24-byte tail) get an unrolled row; a
+// one-descriptor column of an aggregation ring (a tail alone) has no chunk loop at all.
+__attribute__((target("avx2"))) static unsigned rectSadBatchAvx2(const uchar* a, const uchar* b, size_t aStep,
+                                                                 size_t bStep, const ptrdiff_t* offsets, int n,
+                                                                 int width, int height, unsigned* sums)
+{
+    switch (width * DESCRIPTOR_BYTES / 32)
+    {
+    case 0: return rectSadBatchBlocksAvx2<0>(a, b, aStep, bStep, offsets, n, width, height, sums);
+    case 6: return rectSadBatchBlocksAvx2<6>(a, b, aStep, bStep, offsets, n, width, height, sums);
+    default: return rectSadBatchBlocksAvx2<-1>(a, b, aStep, bStep, offsets, n, width, height, sums);
+    }
 }
 
 struct Kernel

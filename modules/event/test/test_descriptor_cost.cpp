@@ -74,7 +74,9 @@ TEST(Event_DescriptorCost, batch_kernel_equals_one_rectangle_per_candidate_and_t
     int checked = 0;
     for (int sign : { -1, 1 })  // the left sensor's candidates lie to the left, the right one's to the right
         for (int n = 0; n <= 11; n++)
-            for (int w : { 1, 2, 3, 4, 9, 17, 31 })  // rows ending 24, 16, 8, 0, 24, 24, 8 bytes into a chunk
+            // Rows ending 24, 16, 8, 0, 0, 24, 24, 8 bytes into a chunk; widths 8 and 9 (six full chunks) and 1 (none)
+            // take the kernel's unrolled rows.
+            for (int w : { 1, 2, 3, 4, 8, 9, 17, 31 })
                 for (int h : { 1, 9, 17, 31 })
                 {
                     // The rectangle at column 40; candidate i is shifted by a disparity of 2i + (i % 3) columns.
@@ -96,7 +98,7 @@ TEST(Event_DescriptorCost, batch_kernel_equals_one_rectangle_per_candidate_and_t
                         << "mass, " << n << " candidates, " << w << " x " << h << " (" << descriptorRectSadKernel() << ")";
                     checked++;
                 }
-    EXPECT_EQ(checked, 2 * 12 * 7 * 4);
+    EXPECT_EQ(checked, 2 * 12 * 8 * 4);
 }
 
 }}  // namespace
