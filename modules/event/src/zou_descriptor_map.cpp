@@ -45,10 +45,15 @@ void ZouDescriptorMap::configure(Size size, int descriptorWindow, int maxVectorL
     offsets_.clear();
     idOffsets_.clear();
     bins_.clear();
+    voteOffsets_.clear();
+    const int h = descriptorWindow / 2;
+    interiorReach_ = maxVectorLength + h;
     for (const Offset& o : table)
     {
         offsets_.push_back(o.d);
         idOffsets_.push_back(o.d.y * paddedWidth_ + o.d.x);
+        // The pixel that sees the event at offset d is at -d from it; its window starts h further up and left.
+        voteOffsets_.push_back(((ptrdiff_t)(-o.d.y - h) * stride_ + (-o.d.x - h)) * DESCRIPTOR_BYTES);
         // Bin k covers [30k, 30(k+1)) degrees; a tiny nudge keeps exact multiples (0, 30, ...) at the start.
         bins_.push_back((uchar)std::min(BINS - 1, (int)std::floor((o.angle + 1e-9) / (CV_PI / 6))));
     }
@@ -116,16 +121,20 @@ void ZouDescriptorMap::expireEarliest(int band)
     deactivateId(expiry_[(size_t)band].topId());
 }
 
-template <typename Op>
-inline void ZouDescriptorMap::forEachVoted(int x, int y, int p, Op op)
+ZouDescriptorMap::VotedWindow ZouDescriptorMap::votedWindow(int x, int y, int p)
 {
     const int h = window_ / 2;
     const int x0 = std::max(0, x - h), x1 = std::min(size_.width - 1, x + h);
     const int y0 = std::max(0, y - h), y1 = std::min(size_.height - 1, y + h);
-    uchar* row = &descriptors_[((size_t)(y0 + margin_) * stride_ + (size_t)(x0 + margin_)) * DESCRIPTOR_BYTES] + p * BINS;
+    return VotedWindow{ bins(x0, y0, p), x1 - x0 + 1, y1 - y0 + 1 };
+}
+
+template <typename Op>
+inline void ZouDescriptorMap::forEachVoted(const VotedWindow& w, Op op)
+{
     const size_t rowStep = descriptorRowStep();
-    const int width = x1 - x0 + 1, height = y1 - y0 + 1;
-    if (width == 3 && height == 3)
+    uchar* row = w.topLeft;
+    if (w.width == 3 && w.height == 3)
     {
         // The default 3 x 3 window away from the border: a fixed loop the compiler unrolls (votes are a fifth of
         // the matcher's instructions, mostly loop control around one or two byte updates).
@@ -134,39 +143,39 @@ inline void ZouDescriptorMap::forEachVoted(int x, int y, int p, Op op)
                 op(row + xx * DESCRIPTOR_BYTES);
         return;
     }
-    for (int yy = 0; yy < height; yy++, row += rowStep)
-        for (int xx = 0; xx < width; xx++)
+    for (int yy = 0; yy < w.height; yy++, row += rowStep)
+        for (int xx = 0; xx < w.width; xx++)
             op(row + (size_t)xx * DESCRIPTOR_BYTES);
 }
 
-void ZouDescriptorMap::vote(int x, int y, int p, int code, int delta)
+void ZouDescriptorMap::vote(const VotedWindow& w, int code, int delta)
 {
     const uchar d = (uchar)delta;  // +1 or 255 (-1 modulo 256): counts never go below zero
     if (code == 0)
     {
-        forEachVoted(x, y, p, [d](uchar* bins) {
+        forEachVoted(w, [d](uchar* bins) {
             for (int b = 0; b < BINS; b++)
                 bins[b] = (uchar)(bins[b] + d);
         });
         return;
     }
     const int bin = bins_[(size_t)code];
-    forEachVoted(x, y, p, [d, bin](uchar* bins) { bins[bin] = (uchar)(bins[bin] + d); });
+    forEachVoted(w, [d, bin](uchar* bins) { bins[bin] = (uchar)(bins[bin] + d); });
 }
 
-void ZouDescriptorMap::revote(int x, int y, int p, int oldCode, int newCode)
+inline void ZouDescriptorMap::revote(const VotedWindow& w, int oldCode, int newCode)
 {
     if (oldCode == NONE || newCode == NONE || oldCode == 0 || newCode == 0)
     {
         if (oldCode != NONE)
-            vote(x, y, p, oldCode, -1);
+            vote(w, oldCode, -1);
         if (newCode != NONE)
-            vote(x, y, p, newCode, +1);
+            vote(w, newCode, +1);
         return;
     }
     // Both are single-bin vectors: move the vote in one pass over the window.
     const int from = bins_[(size_t)oldCode], to = bins_[(size_t)newCode];
-    forEachVoted(x, y, p, [from, to](uchar* bins) {
+    forEachVoted(w, [from, to](uchar* bins) {
         bins[from]--;
         bins[to]++;
     });
@@ -193,12 +202,15 @@ void ZouDescriptorMap::activate(int x, int y, int p, int64 expiry, float lifetim
     // Pixel s sees this event at offset k = (x, y) - s; it becomes s's nearest if closer than the current
     // (NONE is larger than every offset; border pixels hold 0 and are skipped).
     uchar* nearest = &nearest_[(size_t)i];
+    const bool interior = isInterior(x, y);
+    uchar* const eventBins = bins(x, y, p);
     for (int k = 0; k < (int)idOffsets_.size(); k++)
     {
         uchar& cur = nearest[-idOffsets_[(size_t)k]];
         if (cur <= k)
             continue;
-        revote(x - offsets_[(size_t)k].x, y - offsets_[(size_t)k].y, p, cur, k);
+        revote(interior ? interiorVotedWindow(eventBins, k)
+                        : votedWindow(x - offsets_[(size_t)k].x, y - offsets_[(size_t)k].y, p), cur, k);
         cur = (uchar)k;
     }
 }
@@ -217,6 +229,8 @@ void ZouDescriptorMap::deactivateId(int i)
     heapOfRow(y).remove(i);
     active_[i] = 0;
     lifetime_[i] = 0.f;
+    const bool interior = isInterior(x, y);
+    uchar* const eventBins = bins(x, y, p);
     for (int k = 0; k < (int)idOffsets_.size(); k++)
     {
         const int s = i - idOffsets_[(size_t)k];
@@ -225,7 +239,8 @@ void ZouDescriptorMap::deactivateId(int i)
             continue;
         // Offsets before k were all inactive (else one of them would be the nearest): search after k.
         cur = (uchar)scanNearest(s, k + 1);
-        revote(x - offsets_[(size_t)k].x, y - offsets_[(size_t)k].y, p, k, cur);
+        revote(interior ? interiorVotedWindow(eventBins, k)
+                        : votedWindow(x - offsets_[(size_t)k].x, y - offsets_[(size_t)k].y, p), k, cur);
     }
 }
 

@@ -89,13 +89,37 @@ private:
     void resetExpiries();
     // The nearest active event of pixel id from offset `from` on (NONE: none).
     int scanNearest(int id, int from) const;
-    // Calls op(bins) with polarity p's first bin in each descriptor that (x, y)'s vector votes into: the N x N
-    // window around it, clipped to the image.
+    // The bins of polarity p in the descriptors that a pixel's vector votes into: the N x N window around the
+    // pixel, clipped to the image; topLeft points at the first descriptor's bins, rows rowStep bytes apart.
+    struct VotedWindow
+    {
+        uchar* topLeft;
+        int width, height;
+    };
+    // Polarity p's bins in the descriptor of (x, y).
+    uchar* bins(int x, int y, int p)
+    {
+        return &descriptors_[((size_t)(y + margin_) * stride_ + (size_t)(x + margin_)) * DESCRIPTOR_BYTES] + p * BINS;
+    }
+    // The window of pixel (x, y), clipped.
+    VotedWindow votedWindow(int x, int y, int p);
+    // The window of the pixel that sees an event at offset k, for an event at least interiorReach_ pixels from
+    // every border (then the window lies inside the image: no clipping). eventBins: the event's own bins.
+    VotedWindow interiorVotedWindow(uchar* eventBins, int k) const
+    {
+        return VotedWindow{ eventBins + voteOffsets_[(size_t)k], window_, window_ };
+    }
+    bool isInterior(int x, int y) const
+    {
+        return x >= interiorReach_ && y >= interiorReach_ && x < size_.width - interiorReach_ &&
+               y < size_.height - interiorReach_;
+    }
+    // Calls op(bins) for each descriptor of the window.
     template <typename Op>
-    void forEachVoted(int x, int y, int p, Op op);
-    void vote(int x, int y, int p, int code, int delta);
-    // Moves the vote of (x, y)'s vector from oldCode to newCode (either may be NONE) in the window's descriptors.
-    void revote(int x, int y, int p, int oldCode, int newCode);
+    void forEachVoted(const VotedWindow& w, Op op);
+    void vote(const VotedWindow& w, int code, int delta);
+    // Moves the vote of a pixel's vector from oldCode to newCode (either may be NONE) in its window's descriptors.
+    void revote(const VotedWindow& w, int oldCode, int newCode);
 
     Size size_;
     int window_ = 5, maxVectorLength_ = 3, margin_ = 0, stride_ = 0;
@@ -103,6 +127,9 @@ private:
     std::vector<Point> offsets_;  // candidate vectors to the nearest event, by length then angle
     std::vector<int> idOffsets_;  // the same as offsets in the per-pixel arrays
     std::vector<uchar> bins_;     // orientation bin of each offset (offset 0 = the pixel itself: all bins)
+    // Per offset k: from an event's own bins to the first bins of the window of the pixel that sees it at k.
+    std::vector<ptrdiff_t> voteOffsets_;
+    int interiorReach_ = 0;  // maximum vector length + N / 2: an event this far inside votes only inside
     std::vector<uchar> active_, nearest_;
     std::vector<float> lifetime_;
     std::vector<Vec2f> flow_;

@@ -105,8 +105,10 @@ std::vector<ReferenceOffset> referenceOffsets(int maxVectorLength)
 TEST(Event_ZouDescriptorMap, incremental_descriptors_equal_descriptors_from_scratch)
 {
     const Size size(23, 17);
-    // (descriptor window, max vector length, margin): the matcher's defaults, the smallest and largest values.
-    const int configs[][3] = { { 3, 3, 8 }, { 1, 0, 0 }, { 5, 7, 2 }, { 3, 1, 1 } };
+    // (descriptor window, max vector length, margin): the matcher's defaults, the smallest and largest values, and
+    // a 5 x 5 window with room inside (events more than vector length + N / 2 from every border vote without
+    // clipping; with a vector length of 7 no pixel of this image is that far in).
+    const int configs[][3] = { { 3, 3, 8 }, { 1, 0, 0 }, { 5, 7, 2 }, { 3, 1, 1 }, { 5, 3, 2 } };
     for (const auto& config : configs)
     {
         const int window = config[0], maxVectorLength = config[1], margin = config[2];
