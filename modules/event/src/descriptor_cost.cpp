@@ -88,7 +88,7 @@ __attribute__((target("avx2"))) static inline unsigned rectSadBlockAvx2(const uc
     const int bytes = width * DESCRIPTOR_BYTES, full = CHUNKS >= 0 ? CHUNKS * 32 : bytes & ~31;
     // The tail's 64-bit lanes: 1, 2 or 3 of the 4 (none when the row is a multiple of 32 bytes).
     const __m256i tail = _mm256_cmpgt_epi64(_mm256_set1_epi64x((bytes - full) / 8), _mm256_setr_epi64x(0, 1, 2, 3));
-    for (int y = 0; y < height; y++, a += aStep, b += bStep)
+    for (int y = 0; y < height; y++, a += aStep)
     {
         for (int x = 0; x < full; x += 32)
         {
@@ -108,6 +108,8 @@ __attribute__((target("avx2"))) static inline unsigned rectSadBlockAvx2(const uc
                 acc[k] = _mm256_add_epi64(
                     acc[k], _mm256_sad_epu8(s, _mm256_maskload_epi64((const long long*)(b + off[k] + full), tail)));
         }
+        if (K > 0)  // without candidates (the mass alone) b may be null
+            b += bStep;
     }
     for (int k = 0; k < K; k++)
         sums[k] += sumLanesAvx2(acc[k]);
