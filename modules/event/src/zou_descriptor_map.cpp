@@ -47,7 +47,6 @@ void ZouDescriptorMap::configure(Size size, int descriptorWindow, int maxVectorL
     bins_.clear();
     voteOffsets_.clear();
     const int h = descriptorWindow / 2;
-    interiorReach_ = maxVectorLength + h;
     for (const Offset& o : table)
     {
         offsets_.push_back(o.d);
@@ -209,8 +208,7 @@ void ZouDescriptorMap::activate(int x, int y, int p, int64 expiry, float lifetim
         uchar& cur = nearest[-idOffsets_[(size_t)k]];
         if (cur <= k)
             continue;
-        revote(interior ? interiorVotedWindow(eventBins, k)
-                        : votedWindow(x - offsets_[(size_t)k].x, y - offsets_[(size_t)k].y, p), cur, k);
+        revote(windowSeeing(x, y, p, k, interior, eventBins), cur, k);
         cur = (uchar)k;
     }
 }
@@ -239,8 +237,7 @@ void ZouDescriptorMap::deactivateId(int i)
             continue;
         // Offsets before k were all inactive (else one of them would be the nearest): search after k.
         cur = (uchar)scanNearest(s, k + 1);
-        revote(interior ? interiorVotedWindow(eventBins, k)
-                        : votedWindow(x - offsets_[(size_t)k].x, y - offsets_[(size_t)k].y, p), k, cur);
+        revote(windowSeeing(x, y, p, k, interior, eventBins), k, cur);
     }
 }
 

@@ -44,10 +44,7 @@ public:
     Size size() const { return size_; }
     int margin() const { return margin_; }
     // Descriptor of (x, y); valid for x, y within the margin around the image (zero outside it).
-    const uchar* descriptor(int x, int y) const
-    {
-        return &descriptors_[((size_t)(y + margin_) * stride_ + (size_t)(x + margin_)) * DESCRIPTOR_BYTES];
-    }
+    const uchar* descriptor(int x, int y) const { return &descriptors_[descriptorIndex(x, y)]; }
     size_t descriptorRowStep() const { return (size_t)stride_ * DESCRIPTOR_BYTES; }
 
     bool isActive(int x, int y, int p) const { return active_[id(x, y, p)] != 0; }
@@ -96,23 +93,28 @@ private:
         uchar* topLeft;
         int width, height;
     };
-    // Polarity p's bins in the descriptor of (x, y).
-    uchar* bins(int x, int y, int p)
+    // Index of (x, y)'s descriptor in descriptors_ (x, y within the margin around the image).
+    size_t descriptorIndex(int x, int y) const
     {
-        return &descriptors_[((size_t)(y + margin_) * stride_ + (size_t)(x + margin_)) * DESCRIPTOR_BYTES] + p * BINS;
+        return ((size_t)(y + margin_) * stride_ + (size_t)(x + margin_)) * DESCRIPTOR_BYTES;
     }
+    // Polarity p's bins in the descriptor of (x, y).
+    uchar* bins(int x, int y, int p) { return &descriptors_[descriptorIndex(x, y)] + p * BINS; }
     // The window of pixel (x, y), clipped.
     VotedWindow votedWindow(int x, int y, int p);
-    // The window of the pixel that sees an event at offset k, for an event at least interiorReach_ pixels from
-    // every border (then the window lies inside the image: no clipping). eventBins: the event's own bins.
-    VotedWindow interiorVotedWindow(uchar* eventBins, int k) const
-    {
-        return VotedWindow{ eventBins + voteOffsets_[(size_t)k], window_, window_ };
-    }
+    // An event at least maximum vector length + N / 2 pixels from every border votes only inside the image.
     bool isInterior(int x, int y) const
     {
-        return x >= interiorReach_ && y >= interiorReach_ && x < size_.width - interiorReach_ &&
-               y < size_.height - interiorReach_;
+        const int reach = maxVectorLength_ + window_ / 2;
+        return x >= reach && y >= reach && x < size_.width - reach && y < size_.height - reach;
+    }
+    // The window of the pixel that sees the event at (x, y, p) at offset k. For an interior event it is the
+    // event's own bins (eventBins) plus a per-offset constant, with no clipping.
+    VotedWindow windowSeeing(int x, int y, int p, int k, bool interior, uchar* eventBins)
+    {
+        if (interior)
+            return VotedWindow{ eventBins + voteOffsets_[(size_t)k], window_, window_ };
+        return votedWindow(x - offsets_[(size_t)k].x, y - offsets_[(size_t)k].y, p);
     }
     // Calls op(bins) for each descriptor of the window.
     template <typename Op>
@@ -129,7 +131,6 @@ private:
     std::vector<uchar> bins_;     // orientation bin of each offset (offset 0 = the pixel itself: all bins)
     // Per offset k: from an event's own bins to the first bins of the window of the pixel that sees it at k.
     std::vector<ptrdiff_t> voteOffsets_;
-    int interiorReach_ = 0;  // maximum vector length + N / 2: an event this far inside votes only inside
     std::vector<uchar> active_, nearest_;
     std::vector<float> lifetime_;
     std::vector<Vec2f> flow_;
