@@ -3,7 +3,7 @@
 // Must hold: no crash / UB / leak, and every event lies inside the array it was configured for.
 
 #include <opencv2/event.hpp>
-#include "davis_event_decoder.hpp"
+#include "davis/davis_event_decoder.hpp"
 
 #include <cstdlib>
 

@@ -95,6 +95,8 @@ endfunction()
 function(opencv_event_configure_test target)
   set_target_properties(${target} PROPERTIES CXX_STANDARD 17 CXX_STANDARD_REQUIRED ON CXX_EXTENSIONS OFF)
   opencv_event_link_test_codecs(${target})
+  # Unit tests of internal classes include their headers as the library does ("stereo/zou_descriptor_map.hpp").
+  target_include_directories(${target} PRIVATE "${OPENCV_EVENT_MODULE_DIR}/src")
   get_filename_component(source_root "${OPENCV_EVENT_MODULE_DIR}/../.." ABSOLUTE)
   # The repository root: tests read its committed fixtures (the fuzzers' seed files, test/fuzz/corpus).
   target_compile_definitions(${target} PRIVATE

@@ -6,7 +6,7 @@
 // camera streams, transfer by transfer (8 KiB, as the back-end reads them).
 
 #include "perf_precomp.hpp"
-#include "../src/davis_event_decoder.hpp"
+#include "davis/davis_event_decoder.hpp"
 
 namespace opencv_test { namespace {
 

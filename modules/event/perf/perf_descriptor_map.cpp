@@ -6,9 +6,10 @@
 // expiring them, by sensor size, at the matcher's defaults (3 x 3 descriptor window, vectors up to 3 px).
 
 #include "perf_precomp.hpp"
-#include "../src/zou_descriptor_map.hpp"
+#include "stereo/zou_descriptor_map.hpp"
 
 namespace opencv_test { namespace {
+using namespace cv::event::detail;
 
 typedef TestBaseWithParam<Size> Event_DescriptorMap;
 

@@ -7,7 +7,7 @@
 
 #include "test_precomp.hpp"
 #include "davis_test_words.hpp"
-#include "../src/davis_event_decoder.hpp"
+#include "davis/davis_event_decoder.hpp"
 
 namespace opencv_test { namespace {
 

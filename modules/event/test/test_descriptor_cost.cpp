@@ -11,10 +11,11 @@
 // the rectangle would count them.
 
 #include "test_precomp.hpp"
-#include "../src/descriptor_cost.hpp"
-#include "../src/zou_descriptor_map.hpp"
+#include "stereo/descriptor_cost.hpp"
+#include "stereo/zou_descriptor_map.hpp"
 
 namespace opencv_test { namespace {
+using namespace cv::event::detail;
 
 const int bytes = ZouDescriptorMap::DESCRIPTOR_BYTES;
 

@@ -9,7 +9,7 @@
 
 #include "test_precomp.hpp"
 #include "davis_test_words.hpp"
-#include "../src/usb_transport.hpp"
+#include "davis/usb_transport.hpp"
 
 #include <chrono>
 #include <deque>

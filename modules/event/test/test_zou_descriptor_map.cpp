@@ -10,9 +10,10 @@
 // all 12 bins of its polarity), and zero descriptors in the margin around the image.
 
 #include "test_precomp.hpp"
-#include "../src/zou_descriptor_map.hpp"
+#include "stereo/zou_descriptor_map.hpp"
 
 namespace opencv_test { namespace {
+using namespace cv::event::detail;
 
 struct ReferenceOffset
 {

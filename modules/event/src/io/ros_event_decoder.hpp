@@ -1,0 +1,146 @@
+// This file is part of OpenCV project.
+// It is subject to the license terms in the LICENSE file found in the top-level directory
+// of this distribution and at http://opencv.org/license.html.
+
+#ifndef OPENCV_EVENT_SRC_IO_ROS_EVENT_DECODER_HPP
+#define OPENCV_EVENT_SRC_IO_ROS_EVENT_DECODER_HPP
+
+// Payloads of the ROS event messages, shared by the ROS1 bag and ROS2 bag readers (the serialisation of
+// the surrounding message differs: ROS1 is packed little-endian, ROS2 is CDR; each reader extracts the
+// fields and hands the payload here).
+//  - event_camera_msgs/EventPacket, encoding "evt3": Prophesee EVT 3.0 words; the sensor time (us) is
+//    delivered (the decoder state runs across packets, as the words form one stream);
+//  - encoding "libcaer" / "libcaer_cmp"-less plain libcaer: 8-byte libcaer polarity events {u32 data, int32
+//    t_us}; time = time_base (ns) / 1000 + t, + 2^31 us when t rolls over inside the packet;
+//  - dvs_msgs/EventArray events: 13-byte records {u16 x, u16 y, u32 sec, u32 nsec, u8 polarity}.
+
+#include "io/evt3_decoder.hpp"
+#include "io/file_input.hpp"
+
+namespace cv {
+namespace event {
+namespace detail {
+
+class RosEventDecoder
+{
+public:
+    /** Decodes one EventPacket payload. Unknown encodings raise an error naming the file and offset. */
+    void decodePacket(const std::string& encoding, const uchar* data, size_t n, uint64_t timeBase,
+                      std::vector<Event>& out, const String& path, int64 offset)
+    {
+        if (encoding == "evt3")
+        {
+            if (n % 2 != 0)
+                formatError(path, offset, format("evt3 packet of %zu bytes is not a whole number of 16-bit words", n));
+            words_.resize(n / 2);
+            std::memcpy(words_.data(), data, n);
+            evt3_.decode(words_.data(), words_.size(), out);
+        }
+        else if (encoding == "libcaer")
+        {
+            if (n % 8 != 0)
+                formatError(path, offset, format("libcaer packet of %zu bytes is not a whole number of 8-byte events", n));
+            int64 high = (int64)(timeBase / 1000);
+            int64 lastLow = 0;
+            for (size_t i = 0; i < n; i += 8)
+            {
+                uint32_t d;
+                int32_t t;
+                std::memcpy(&d, data + i, 4);
+                std::memcpy(&t, data + i + 4, 4);
+                if (t < lastLow)
+                    high += (int64)1 << 31;  // the 31-bit microsecond counter rolled over inside the packet
+                lastLow = t;
+                out.push_back(Event(high + t, (int)((d >> 17) & 0x7FFF), (int)((d >> 2) & 0x7FFF), (d >> 1) & 1u));
+            }
+        }
+        else
+            formatError(path, offset, "EventPacket encoding \"" + encoding + "\" is not supported (evt3, libcaer)");
+    }
+
+    /** Decodes @p count dvs_msgs/Event records (13 bytes each). */
+    static void decodeDvsEvents(const uchar* data, size_t count, std::vector<Event>& out)
+    {
+        for (size_t i = 0; i < count; i++, data += 13)
+        {
+            uint16_t x, y;
+            uint32_t sec, nsec;
+            std::memcpy(&x, data, 2);
+            std::memcpy(&y, data + 2, 2);
+            std::memcpy(&sec, data + 4, 4);
+            std::memcpy(&nsec, data + 8, 4);
+            out.push_back(Event((int64)sec * 1000000 + nsec / 1000, x, y, data[12] ? POLARITY_ON : POLARITY_OFF));
+        }
+    }
+
+    int64 skipped() const { return evt3_.skipped(); }
+
+private:
+    Evt3Decoder evt3_;
+    std::vector<uint16_t> words_;
+};
+
+/** Bounds-checked little-endian reading of a serialised message. */
+class MessageCursor
+{
+public:
+    MessageCursor(const uchar* data, size_t size, const String& path, int64 offset, size_t cdrOrigin = 0)
+        : data_(data), size_(size), path_(path), offset_(offset), origin_(cdrOrigin) {}
+
+    template<typename T>
+    T read(const char* what)
+    {
+        need(sizeof(T), what);
+        T v;
+        std::memcpy(&v, data_ + pos_, sizeof(T));
+        pos_ += sizeof(T);
+        return v;
+    }
+    std::string string(const char* what, bool cdr)
+    {
+        if (cdr)
+            align(4);
+        const uint32_t n = read<uint32_t>(what);
+        need(n, what);
+        std::string s(reinterpret_cast<const char*>(data_ + pos_), n);
+        pos_ += n;
+        if (cdr && !s.empty() && s.back() == '\0')
+            s.pop_back();  // CDR strings count their terminating NUL
+        return s;
+    }
+    const uchar* bytes(size_t n, const char* what)
+    {
+        need(n, what);
+        const uchar* p = data_ + pos_;
+        pos_ += n;
+        return p;
+    }
+    /** CDR alignment, relative to the start of the data after the encapsulation header. */
+    void align(size_t a)
+    {
+        const size_t rel = pos_ - origin_;
+        const size_t pad = (a - rel % a) % a;
+        need(pad, "alignment");
+        pos_ += pad;
+    }
+    size_t remaining() const { return size_ - pos_; }
+
+private:
+    void need(size_t n, const char* what) const
+    {
+        if (n > size_ - pos_)
+            formatError(path_, offset_, format("truncated message: %s needs %zu bytes, %zu left", what, n, size_ - pos_));
+    }
+
+    const uchar* data_;
+    size_t size_, pos_ = 0;
+    String path_;
+    int64 offset_;
+    size_t origin_;
+};
+
+}  // namespace detail
+}  // namespace event
+}  // namespace cv
+
+#endif  // OPENCV_EVENT_SRC_IO_ROS_EVENT_DECODER_HPP

@@ -1,0 +1,447 @@
+// This file is part of OpenCV project.
+// It is subject to the license terms in the LICENSE file found in the top-level directory
+// of this distribution and at http://opencv.org/license.html.
+
+// Event lifetime by local plane fitting on the Surface of Active Events (Mueggler et al. 2015), with the
+// prediction shortcut of Hadviger et al. 2019. See lifetime_estimator.hpp for the method.
+
+#include "precomp.hpp"
+#include "lifetime/lifetime_estimation_rows.hpp"
+#include "common/timestamp_math.hpp"
+
+#include <Eigen/Dense>
+
+namespace cv {
+namespace event {
+namespace detail {
+
+namespace {
+
+struct Prediction
+{
+    float a = 0, b = 0;   // time-surface gradient [ms/px]
+    int64 t = 0;          // predicted arrival [us]
+    bool valid = false;
+};
+
+class LifetimeEstimatorImpl CV_FINAL : public LifetimeEstimator
+{
+public:
+    explicit LifetimeEstimatorImpl(Size size) { setSensorSize(size); }
+
+    void process(InputArray events, OutputArray lifetimes, OutputArray flow, OutputArray status) CV_OVERRIDE
+    {
+        Mat_<Event> ev = getEventMat(events);
+        const int n = (int)ev.total();
+        lifetimes.create(n, 1, CV_32F);
+        Mat_<float> lt = lifetimes.getMat();
+        Mat_<float> fl;
+        Mat_<uchar> st;
+        if (flow.needed())
+        {
+            flow.create(n, 2, CV_32F);
+            fl = flow.getMat();
+        }
+        if (status.needed())
+        {
+            status.create(n, 1, CV_8U);
+            st = status.getMat();
+        }
+        for (int i = 0; i < n; i++)
+        {
+            Vec2f v;
+            int s;
+            lt(i) = processEvent(ev(i), v, s);
+            if (!fl.empty())
+            {
+                fl(i, 0) = v[0];
+                fl(i, 1) = v[1];
+            }
+            if (!st.empty())
+                st(i) = (uchar)s;
+        }
+    }
+
+    float processEvent(const Event& e, Vec2f& flow, int& status) CV_OVERRIDE
+    {
+        return processEvent(e, flow, status, own_);
+    }
+
+    float processEvent(const Event& e, Vec2f& flow, int& status, LifetimeScratch& scratch)
+    {
+        checkInside(e);
+        const int p = e.p ? 1 : 0;
+        const size_t idx = index(e.x, e.y, p);
+        double a = 0, b = 0;
+        status = LIFETIME_NOISE;
+        Prediction& pred = predictions_[idx];
+        if (usePrediction_ && pred.valid && std::abs(timeDifference(e.t, pred.t)) <= predictionTolerance_)
+        {
+            a = pred.a;
+            b = pred.b;
+            status = LIFETIME_PREDICTED;
+        }
+        else if (fit(e, p, pred, scratch.points, a, b))
+            status = LIFETIME_FITTED;
+        pred.valid = false;  // consumed (or stale)
+        surface_[idx] = e.t;
+
+        float lifetime = 0;
+        flow = Vec2f(0, 0);
+        const double g2 = a * a + b * b;
+        if (status != LIFETIME_NOISE && g2 > 1e-12)
+        {
+            lifetime = (float)(1000.0 * std::sqrt(g2));  // |g| ms -> us
+            flow = Vec2f((float)(1000.0 * a / g2), (float)(1000.0 * b / g2));  // g / |g|^2 px/ms -> px/s
+            predictNeighbour(e, p, a, b);
+        }
+        else
+            status = LIFETIME_NOISE;
+        scratch.counts[status]++;
+        Active& act = active_[(size_t)e.y * size_.width + e.x];
+        act.t = e.t;
+        act.lifetime = lifetime;
+        act.p = (uchar)p;
+        return lifetime;
+    }
+
+    void insertEvent(const Event& e, float lifetime, const Vec2f& flow) CV_OVERRIDE
+    {
+        insertEvent(e, lifetime, flow, own_);
+    }
+
+    void insertEvent(const Event& e, float lifetime, const Vec2f& flow, LifetimeScratch& scratch)
+    {
+        checkInside(e);
+        const int p = e.p ? 1 : 0;
+        const size_t idx = index(e.x, e.y, p);
+        predictions_[idx].valid = false;
+        surface_[idx] = e.t;
+        const double v2 = (double)flow[0] * flow[0] + (double)flow[1] * flow[1];
+        if (lifetime > 0 && v2 > 0)
+        {
+            // Gradient g = v / |v|^2, with v in px/ms: the plane that produced this flow.
+            const double vx = flow[0] * 1e-3, vy = flow[1] * 1e-3, v2ms = v2 * 1e-6;
+            predictNeighbour(e, p, vx / v2ms, vy / v2ms);
+        }
+        scratch.counts[LIFETIME_MATCHED]++;
+        Active& act = active_[(size_t)e.y * size_.width + e.x];
+        act.t = e.t;
+        act.lifetime = std::max(lifetime, 0.f);
+        act.p = (uchar)p;
+    }
+
+    void renderActiveEvents(double t, OutputArray image) const CV_OVERRIDE
+    {
+        image.create(size_, CV_8U);
+        Mat_<uchar> img = image.getMat();
+        for (int i = 0; i < size_.area(); i++)
+        {
+            const Active& a = active_[i];
+            const bool alive = a.lifetime > 0 && a.t <= t && t < (double)a.t + a.lifetime;
+            img(i) = alive ? (a.p ? 255 : 128) : 0;
+        }
+    }
+
+    void reset() CV_OVERRIDE
+    {
+        const size_t n = (size_t)size_.area();
+        surface_.assign(2 * n, EventSurface::NO_EVENT);
+        predictions_.assign(2 * n, Prediction());
+        active_.assign(n, Active());
+        for (double& c : own_.counts)
+            c = 0;
+    }
+
+    void addCounts(LifetimeScratch& scratch)
+    {
+        for (int s = 0; s < 4; s++)
+        {
+            own_.counts[s] += scratch.counts[s];
+            scratch.counts[s] = 0;
+        }
+    }
+
+    // Rows above and below the event's that processEvent reads or writes: the fit's window, the predicted
+    // neighbour (one row).
+    int rowReach() const { return std::max(window_ / 2, 1); }
+
+    double getStatusCount(int s) const CV_OVERRIDE
+    {
+        CV_CheckGE(s, 0, "LifetimeEstimator::getStatusCount: status 0..3");
+        CV_CheckLE(s, 3, "LifetimeEstimator::getStatusCount: status 0..3");
+        return own_.counts[s];
+    }
+
+    Size getSensorSize() const CV_OVERRIDE { return size_; }
+    void setSensorSize(Size s) CV_OVERRIDE
+    {
+        if (s.width <= 0 || s.height <= 0 || s.width > 32768 || s.height > 32768)
+            CV_Error_(Error::StsBadArg, ("LifetimeEstimator: sensor size %d x %d is not valid", s.width, s.height));
+        size_ = s;
+        reset();
+    }
+    int getWindowSize() const CV_OVERRIDE { return window_; }
+    void setWindowSize(int n) CV_OVERRIDE
+    {
+        if (n < 3 || n % 2 == 0 || n > 31)
+            CV_Error_(Error::StsBadArg, ("LifetimeEstimator: window size %d; must be odd, 3..31", n));
+        window_ = n;
+    }
+    double getTimeWindow() const CV_OVERRIDE { return timeWindow_; }
+    void setTimeWindow(double us) CV_OVERRIDE { timeWindow_ = positive(us, "time window"); }
+    double getInlierThreshold() const CV_OVERRIDE { return inlierThreshold_; }
+    void setInlierThreshold(double ms) CV_OVERRIDE { inlierThreshold_ = positive(ms, "inlier threshold"); }
+    int getMinInliers() const CV_OVERRIDE { return minInliers_; }
+    void setMinInliers(int n) CV_OVERRIDE
+    {
+        if (n < 3)
+            CV_Error_(Error::StsBadArg, ("LifetimeEstimator: minInliers %d; a plane needs at least 3 points", n));
+        minInliers_ = n;
+    }
+    int getMaxIterations() const CV_OVERRIDE { return maxIterations_; }
+    void setMaxIterations(int n) CV_OVERRIDE
+    {
+        if (n < 1)
+            CV_Error_(Error::StsBadArg, ("LifetimeEstimator: maxIterations %d; at least 1", n));
+        maxIterations_ = n;
+    }
+    double getRegularization() const CV_OVERRIDE { return lambda_; }
+    void setRegularization(double l) CV_OVERRIDE
+    {
+        if (!(l >= 0))
+            CV_Error_(Error::StsBadArg, ("LifetimeEstimator: regularization %g; must be >= 0", l));
+        lambda_ = l;
+    }
+    double getPredictionTolerance() const CV_OVERRIDE { return predictionTolerance_; }
+    void setPredictionTolerance(double us) CV_OVERRIDE { predictionTolerance_ = positive(us, "prediction tolerance"); }
+    bool getUsePrediction() const CV_OVERRIDE { return usePrediction_; }
+    void setUsePrediction(bool u) CV_OVERRIDE { usePrediction_ = u; }
+    int getSeed() const CV_OVERRIDE { return seed_; }
+    void setSeed(int s) CV_OVERRIDE { seed_ = s; }
+
+    void write(FileStorage& fs) const CV_OVERRIDE
+    {
+        writeFormat(fs);
+        fs << "sensorWidth" << size_.width << "sensorHeight" << size_.height << "windowSize" << window_
+           << "timeWindow" << timeWindow_ << "inlierThreshold" << inlierThreshold_ << "minInliers" << minInliers_
+           << "maxIterations" << maxIterations_ << "regularization" << lambda_
+           << "predictionTolerance" << predictionTolerance_ << "usePrediction" << (int)usePrediction_ << "seed" << seed_;
+    }
+
+    void read(const FileNode& fn) CV_OVERRIDE
+    {
+        auto num = [&](const char* key, double def) { return fn[key].empty() ? def : (double)fn[key]; };
+        const Size s((int)num("sensorWidth", size_.width), (int)num("sensorHeight", size_.height));
+        setWindowSize((int)num("windowSize", window_));
+        setTimeWindow(num("timeWindow", timeWindow_));
+        setInlierThreshold(num("inlierThreshold", inlierThreshold_));
+        setMinInliers((int)num("minInliers", minInliers_));
+        setMaxIterations((int)num("maxIterations", maxIterations_));
+        setRegularization(num("regularization", lambda_));
+        setPredictionTolerance(num("predictionTolerance", predictionTolerance_));
+        setUsePrediction(num("usePrediction", usePrediction_) != 0);
+        setSeed((int)num("seed", seed_));
+        if (s != size_)
+            setSensorSize(s);
+    }
+
+    String getDefaultName() const CV_OVERRIDE { return "LifetimeEstimator"; }
+
+private:
+    struct Active
+    {
+        int64 t = 0;
+        float lifetime = 0;
+        uchar p = 0;
+    };
+
+    static double positive(double v, const char* what)
+    {
+        if (!(v > 0))
+            CV_Error_(Error::StsBadArg, ("LifetimeEstimator: %s %g; must be > 0", what, v));
+        return v;
+    }
+
+    void checkInside(const Event& e) const
+    {
+        if ((unsigned)e.x >= (unsigned)size_.width || (unsigned)e.y >= (unsigned)size_.height)
+            CV_Error_(Error::StsOutOfRange, ("LifetimeEstimator: event at (x=%d, y=%d), t=%lld us, is outside the "
+                                             "%d x %d sensor", e.x, e.y, (long long)e.t, size_.width, size_.height));
+        if (e.t == EventSurface::NO_EVENT)
+            CV_Error_(Error::StsOutOfRange, ("LifetimeEstimator: event at (x=%d, y=%d) has t = INT64_MIN, which is "
+                                             "reserved for EventSurface::NO_EVENT", e.x, e.y));
+    }
+
+    size_t index(int x, int y, int p) const { return (size_t)p * size_.area() + (size_t)y * size_.width + x; }
+
+    // A 64-bit mix (splitmix64's finaliser) of the seed and the event: pixel, polarity, time.
+    uint64 sampleSeed(const Event& e, int p) const
+    {
+        uint64 z = (uint64)(uint32_t)seed_ * 0x9E3779B97F4A7C15ULL;
+        z ^= ((uint64)(uint16_t)e.x << 48) ^ ((uint64)(uint16_t)e.y << 32) ^ ((uint64)p << 31) ^ (uint64)e.t;
+        z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ULL;
+        z = (z ^ (z >> 27)) * 0x94D049BB133111EBULL;
+        z ^= z >> 31;
+        return z ? z : 1;
+    }
+
+    // RANSAC + refit. On success, (a, b) is the time-surface gradient [ms/px].
+    bool fit(const Event& e, int p, const Prediction& pred, std::vector<SurfacePoint>& points, double& a, double& b)
+    {
+        const int r = window_ / 2;
+        points.clear();
+        const int64 oldest = timeBefore(e.t, (int64)timeWindow_);
+        for (int dy = -r; dy <= r; dy++)
+        {
+            const int y = e.y + dy;
+            if (y < 0 || y >= size_.height)
+                continue;
+            const int64* row = &surface_[index(0, y, p)];
+            for (int dx = -r; dx <= r; dx++)
+            {
+                const int x = e.x + dx;
+                if ((dx == 0 && dy == 0) || x < 0 || x >= size_.width)
+                    continue;
+                const int64 ts = row[x];
+                if (ts == EventSurface::NO_EVENT || ts < oldest || ts > e.t)
+                    continue;
+                points.push_back(SurfacePoint{ (double)dx, (double)dy, (double)(ts - e.t) * 1e-3 });
+            }
+        }
+        const int m = (int)points.size();
+        if (m + 1 < minInliers_ || m < 2)
+            return false;
+
+        // The samples depend on the seed and the event alone, not on how many fits ran before: the same
+        // results whatever the order of calls for events in distant rows (StereoEventMatcher's row bands).
+        RNG rng(sampleSeed(e, p));
+        int bestCount = 0;
+        double bestA = 0, bestB = 0;
+        for (int it = 0; it < maxIterations_; it++)
+        {
+            const int i = rng.uniform(0, m);
+            int j = rng.uniform(0, m - 1);
+            if (j >= i)
+                j++;
+            const SurfacePoint& p1 = points[i];
+            const SurfacePoint& p2 = points[j];
+            // Plane t = a x + b y through the current event (origin) and the two samples.
+            const double det = p1.x * p2.y - p2.x * p1.y;
+            if (std::abs(det) < 1e-9)
+                continue;  // collinear with the current event: degenerate
+            const double ha = (p1.t * p2.y - p2.t * p1.y) / det;
+            const double hb = (p1.x * p2.t - p2.x * p1.t) / det;
+            int count = 1;  // the current event lies on every hypothesis
+            for (const SurfacePoint& q : points)
+                count += std::abs(ha * q.x + hb * q.y - q.t) <= inlierThreshold_;
+            if (count > bestCount)
+            {
+                bestCount = count;
+                bestA = ha;
+                bestB = hb;
+            }
+        }
+        if (bestCount < minInliers_)
+            return false;
+
+        // Least squares t = a x + b y + c over the inliers and the current event, pulled toward the plane
+        // predicted for this pixel when one exists (ridge on a, b).
+        Eigen::Matrix3d ata = Eigen::Matrix3d::Zero();
+        Eigen::Vector3d atb = Eigen::Vector3d::Zero();
+        auto add = [&](double x, double y, double t) {
+            const Eigen::Vector3d row(x, y, 1.0);
+            ata += row * row.transpose();
+            atb += row * t;
+        };
+        add(0, 0, 0);
+        for (const SurfacePoint& q : points)
+            if (std::abs(bestA * q.x + bestB * q.y - q.t) <= inlierThreshold_)
+                add(q.x, q.y, q.t);
+        if (pred.valid && lambda_ > 0)
+        {
+            ata(0, 0) += lambda_;
+            ata(1, 1) += lambda_;
+            atb(0) += lambda_ * pred.a;
+            atb(1) += lambda_ * pred.b;
+        }
+        const Eigen::Vector3d sol = ata.ldlt().solve(atb);
+        if (!sol.allFinite())
+            return false;
+        a = sol(0);
+        b = sol(1);
+        return true;
+    }
+
+    // Stores the plane at the 8-neighbour the edge moves to, with the time it should get there.
+    void predictNeighbour(const Event& e, int p, double a, double b)
+    {
+        const double angle = std::atan2(b, a);  // the direction of motion: along the gradient
+        if (!std::isfinite(angle))
+            return;  // no direction (an infinite flow given to insertEvent): nothing to predict
+        const int k = (int)std::lround(angle / (CV_PI / 4));  // -4..4, in steps of 45 degrees
+        // The neighbour in direction k: cos and sin of k x 45 degrees rounded to integers.
+        static const int kDx[9] = { -1, -1, 0, 1, 1, 1, 0, -1, -1 }, kDy[9] = { 0, -1, -1, -1, 0, 1, 1, 1, 0 };
+        const int dx = kDx[k + 4], dy = kDy[k + 4];
+        const int x = e.x + dx, y = e.y + dy;
+        if (x < 0 || x >= size_.width || y < 0 || y >= size_.height)
+            return;
+        const double stepUs = 1000.0 * (a * dx + b * dy);  // the plane's time to that pixel
+        if (!(std::abs(stepUs) < 9e18))
+            return;  // an edge too slow to reach it in any time an int64 holds (a tiny flow given to insertEvent)
+        Prediction& q = predictions_[index(x, y, p)];
+        q.a = (float)a;
+        q.b = (float)b;
+        const int64 step = (int64)std::llround(stepUs);
+        q.t = step >= 0 ? timeAfter(e.t, step) : timeBefore(e.t, -step);
+        q.valid = true;
+    }
+
+    Size size_;
+    int window_ = 5;
+    double timeWindow_ = 100000;
+    double inlierThreshold_ = 2.0;
+    int minInliers_ = 5;
+    int maxIterations_ = 19;
+    double lambda_ = 1.0;
+    double predictionTolerance_ = 1000;
+    bool usePrediction_ = true;
+    int seed_ = 0;
+    std::vector<int64> surface_;
+    std::vector<Prediction> predictions_;
+    std::vector<Active> active_;
+    LifetimeScratch own_;  // the working memory of the public calls; its counts are the estimator's
+};
+
+}  // namespace
+
+float processEventInRows(LifetimeEstimator& estimator, const Event& e, Vec2f& flow, int& status, LifetimeScratch& scratch)
+{
+    return static_cast<LifetimeEstimatorImpl&>(estimator).processEvent(e, flow, status, scratch);
+}
+
+void insertEventInRows(LifetimeEstimator& estimator, const Event& e, float lifetime, const Vec2f& flow,
+                       LifetimeScratch& scratch)
+{
+    static_cast<LifetimeEstimatorImpl&>(estimator).insertEvent(e, lifetime, flow, scratch);
+}
+
+void addStatusCounts(LifetimeEstimator& estimator, LifetimeScratch& scratch)
+{
+    static_cast<LifetimeEstimatorImpl&>(estimator).addCounts(scratch);
+}
+
+int lifetimeRowReach(const LifetimeEstimator& estimator)
+{
+    return static_cast<const LifetimeEstimatorImpl&>(estimator).rowReach();
+}
+
+}  // namespace detail
+
+Ptr<LifetimeEstimator> LifetimeEstimator::create(Size sensorSize)
+{
+    return makePtr<detail::LifetimeEstimatorImpl>(sensorSize);
+}
+
+}  // namespace event
+}  // namespace cv

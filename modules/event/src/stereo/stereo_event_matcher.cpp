@@ -1,0 +1,663 @@
+// This file is part of OpenCV project.
+// It is subject to the license terms in the LICENSE file found in the top-level directory
+// of this distribution and at http://opencv.org/license.html.
+
+// Per-event stereo disparity and lifetime (Hadviger et al. 2019): the per-event pipeline (admission,
+// lifetime and activity of each event, the frame + SGBM baseline, the row bands' glue), the parameters and the
+// rendering. The matching core is in stereo_event_matching.cpp; the method is described in the public header.
+
+#include "precomp.hpp"
+#include "common/ascii.hpp"
+#include "common/timestamp_math.hpp"
+#include "stereo/rectification_table.hpp"
+#include "stereo/stereo_event_matcher_impl.hpp"
+
+#include "opencv2/imgproc.hpp"
+
+namespace cv {
+namespace event {
+namespace detail {
+
+// ---- pipeline
+
+StereoEventMatcherImpl::StereoEventMatcherImpl(Size size, int mode)
+{
+    estimators_[0] = LifetimeEstimator::create(size);
+    estimators_[1] = LifetimeEstimator::create(size);
+    checkMode(mode);
+    mode_ = mode;
+    setSensorSize(size);
+}
+
+void StereoEventMatcherImpl::process(InputArray events, OutputArray disparity, OutputArray lifetime, OutputArray flags, OutputArray depth,
+             OutputArray flow)
+{
+    Mat_<Event> ev = getEventMat(events);
+    const int n = (int)ev.total();
+    disparity.create(n, 1, CV_32F);
+    Mat_<float> disp = disparity.getMat(), lt, dep, fl;
+    Mat_<int> fla;
+    if (lifetime.needed())
+    {
+        lifetime.create(n, 1, CV_32F);
+        lt = lifetime.getMat();
+    }
+    if (flags.needed())
+    {
+        flags.create(n, 1, CV_32S);
+        fla = flags.getMat();
+    }
+    if (depth.needed())
+    {
+        depth.create(n, 1, CV_32F);
+        dep = depth.getMat();
+    }
+    if (flow.needed())
+    {
+        flow.create(n, 2, CV_32F);
+        fl = flow.getMat();
+    }
+    auto store = [&](int i, const StereoEventEstimate& s) {
+        disp(i) = s.disparity;
+        if (!lt.empty())
+            lt(i) = s.lifetime;
+        if (!fla.empty())
+            fla(i) = s.flags;
+        if (!dep.empty())
+            dep(i) = s.depth;
+        if (!fl.empty())
+        {
+            fl(i, 0) = s.flow[0];
+            fl(i, 1) = s.flow[1];
+        }
+    };
+    if (mode_ == STEREO_FRAME_SGBM)
+    {
+        processFrames(ev, store);
+        return;
+    }
+    if (numThreads_ > 1 && n >= MIN_EVENTS_FOR_BANDS)
+    {
+        processInBands(ev, store);
+        return;
+    }
+    StereoEventEstimate s;
+    for (int i = 0; i < n; i++)
+    {
+        processEvent(ev(i), s);
+        store(i, s);
+    }
+}
+
+void StereoEventMatcherImpl::processEvent(const Event& e, StereoEventEstimate& est)
+{
+    if (mode_ == STEREO_FRAME_SGBM)
+        CV_Error(Error::StsNotImplemented, "StereoEventMatcher: FRAME_SGBM works on windows of events; use process() "
+                                           "with whole windows (processEvent is for the per-event modes)");
+    est = StereoEventEstimate();
+    const Point r = admit(e);
+    est.rectified = r;
+    if (r.x < 0)
+    {
+        est.flags = STEREO_OUTSIDE;
+        return;
+    }
+    maps_[0].expireUntil(e.t);
+    maps_[1].expireUntil(e.t);
+    processAdmitted(e, r, coldStartEnd_, scratch_, est);
+    addStatusCounts(*estimators_[e.camera], scratch_.lifetimes[e.camera]);
+}
+
+// processEvent after admit() and the expiries due: the event at rectified pixel r, inside the image.
+// Reads and writes only rows within eventRowReach() of r.y, with its own scratch: see processInBands().
+void StereoEventMatcherImpl::processAdmitted(const Event& e, Point r, int64 coldStartEnd, MatchScratch& s, StereoEventEstimate& est)
+{
+    const int c = e.camera, p = e.p ? 1 : 0;
+    Event re = e;
+    re.x = (short)r.x;
+    re.y = (short)r.y;
+    LifetimeEstimator& estimator = *estimators_[c];
+
+    int status = -1;
+    if (mode_ == STEREO_DECOUPLED)
+        est.lifetime = processEventInRows(estimator, re, est.flow, status, s.lifetimes[c]);
+    // The event takes part in its own descriptor while it is matched; its final activity follows below.
+    maps_[c].activate(r.x, r.y, p, std::numeric_limits<int64>::max(), 0.f, Vec2f());
+    const MatchResult m = match(c, r, p, e.t, s);
+    est.disparity = m.disparity;
+    est.flags |= m.flags;
+    if (mode_ == STEREO_COUPLED)
+    {
+        if (m.disparity >= 0 && matchedLifetime(1 - c, m.counterpartX, r.y, p, s, est.lifetime, est.flow))
+        {
+            insertEventInRows(estimator, re, est.lifetime, est.flow, s.lifetimes[c]);
+            status = LIFETIME_MATCHED;
+        }
+        else
+            est.lifetime = processEventInRows(estimator, re, est.flow, status, s.lifetimes[c]);
+    }
+
+    int64 activeFor = 0;
+    if (mode_ == STEREO_FIXED_INTERVAL)
+        activeFor = fixedInterval_;
+    else if (est.lifetime > 0)
+        activeFor = activeSpan(est.lifetime);
+    else if (e.t < coldStartEnd)
+    {
+        // Cold start: during the plane fit's first time window the surface cannot hold the history a fit
+        // needs, so a scene's first edges fail it for want of neighbours, not for being noise, and without
+        // them neither sensor has anything active to match against. Such an event gets no lifetime of its
+        // own but stays visible to matching as if its lifetime were the fixed interval (FIXED_INTERVAL's
+        // activity, which needs no history).
+        activeFor = activeSpan(fixedInterval_);
+    }
+    if (activeFor > 0)
+        maps_[c].activate(r.x, r.y, p, timeAfter(e.t, activeFor), est.lifetime, est.flow);
+    else
+        maps_[c].deactivate(r.x, r.y, p);
+
+    if (est.disparity >= 0)
+    {
+        est.flags |= STEREO_HAS_DISPARITY;
+        if (est.disparity > 0 && focalBaseline_ != 0)
+            est.depth = (float)(focalBaseline_ / est.disparity);
+    }
+    if (est.lifetime > 0)
+    {
+        est.flags |= STEREO_HAS_LIFETIME;
+        if (status == LIFETIME_MATCHED)
+            est.flags |= STEREO_LIFETIME_MATCHED;
+        else if (status == LIFETIME_PREDICTED)
+            est.flags |= STEREO_LIFETIME_PREDICTED;
+    }
+    else if (status == LIFETIME_NOISE)
+    {
+        est.flags |= STEREO_NOISE;
+        est.flow = Vec2f();
+    }
+    remember(c, r, e.t, activeFor, est.disparity);
+}
+
+// How long an event with this lifetime (us per pixel) stays active: until its edge has moved
+// activeDistance_ pixels, at most maxLifetime_.
+int64 StereoEventMatcherImpl::activeSpan(double lifetime) const
+{
+    const double span = std::min(lifetime * activeDistance_, (double)maxLifetime_);
+    return std::max<int64>(1, (int64)std::llround(span));
+}
+
+// Checks the event (camera, sensor bounds, time order) and returns its rectified pixel, (-1, -1) when it
+// falls outside the rectified image.
+Point StereoEventMatcherImpl::admit(const Event& e)
+{
+    if (e.camera > 1)
+        CV_Error_(Error::StsBadArg, ("StereoEventMatcher: event (t=%lld us, x=%d, y=%d) has camera %d; a stereo "
+                                     "stream has CAMERA_LEFT (0) and CAMERA_RIGHT (1)", (long long)e.t, e.x, e.y, e.camera));
+    if ((unsigned)e.x >= (unsigned)size_.width || (unsigned)e.y >= (unsigned)size_.height)
+        CV_Error_(Error::StsOutOfRange, ("StereoEventMatcher: event at (x=%d, y=%d), t=%lld us, camera %d, is outside "
+                                         "the %d x %d sensor", e.x, e.y, (long long)e.t, e.camera, size_.width, size_.height));
+    if (e.t == EventSurface::NO_EVENT)
+        CV_Error_(Error::StsOutOfRange, ("StereoEventMatcher: event (x=%d, y=%d, camera %d) has t = INT64_MIN, which is "
+                                         "reserved for EventSurface::NO_EVENT", e.x, e.y, e.camera));
+    if (e.t < lastTime_)
+        CV_Error_(Error::StsBadArg, ("StereoEventMatcher: event at t=%lld us (x=%d, y=%d, camera %d) is earlier than the "
+                                     "previous one (t=%lld us): events of both sensors must come merged in time order "
+                                     "(mergeStereoEvents, EventCapture::openStereo)", (long long)e.t, e.x, e.y,
+                                     e.camera, (long long)lastTime_));
+    // The stream starts, or resumes after a gap longer than the plane fit's time window: the surfaces hold
+    // no usable history, and the cold start (processEvent) runs for one time window.
+    const int64 window = (int64)std::min(estimators_[e.camera]->getTimeWindow(), 1e18);
+    if (lastTime_ == std::numeric_limits<int64>::min() || e.t > timeAfter(lastTime_, window))
+        coldStartEnd_ = timeAfter(e.t, window);
+    lastTime_ = e.t;
+    if (lut_[e.camera].empty())
+        return Point(e.x, e.y);
+    const int r = lut_[e.camera][(size_t)e.y * size_.width + e.x];
+    return r < 0 ? Point(-1, -1) : Point(r % size_.width, r / size_.width);
+}
+
+void StereoEventMatcherImpl::remember(int c, Point r, int64 t, int64 activeFor, float disparity)
+{
+    const size_t i = (size_t)r.y * size_.width + r.x;
+    PixelEstimate& q = lastEstimate_[c][i];
+    lastEventTime_[c][i] = t;
+    q.until = timeAfter(t, activeFor);
+    q.disparity = disparity;
+}
+
+void StereoEventMatcherImpl::processFrames(const Mat_<Event>& ev, const StoreFn& store)
+{
+    const int n = (int)ev.total();
+    std::vector<Point> pixels((size_t)n);
+    std::vector<int64> times((size_t)n);
+    std::vector<uchar> cameras((size_t)n);
+    for (int i = 0; i < n; i++)
+    {
+        const Point r = admit(ev(i));
+        pixels[(size_t)i] = r;
+        times[(size_t)i] = ev(i).t;
+        cameras[(size_t)i] = r.x < 0 ? 255 : ev(i).camera;
+    }
+    std::vector<float> disparity;
+    frames_.process(pixels, times, cameras, disparity);
+    for (int i = 0; i < n; i++)
+    {
+        StereoEventEstimate s;
+        s.rectified = pixels[(size_t)i];
+        if (cameras[(size_t)i] > 1)
+            s.flags = STEREO_OUTSIDE;
+        else
+        {
+            s.disparity = disparity[(size_t)i];
+            if (s.disparity >= 0)
+            {
+                s.flags = STEREO_HAS_DISPARITY;
+                if (s.disparity > 0 && focalBaseline_ != 0)
+                    s.depth = (float)(focalBaseline_ / s.disparity);
+            }
+            remember(cameras[(size_t)i], s.rectified, times[(size_t)i], frameWindow_, s.disparity);
+        }
+        store(i, s);
+    }
+}
+
+// The admission runs here in order (the checks, the rectified pixel and the cold start depend on the events
+// before); the events and expiries run in row bands, ordered by RowBandScheduler as on one thread.
+void StereoEventMatcherImpl::processInBands(const Mat_<Event>& ev, const StoreFn& store)
+{
+    const int n = (int)ev.total();
+    admitted_.resize((size_t)n);
+    admittedRows_.resize((size_t)n);
+    times_.resize((size_t)n);
+    // An event that fails admission ends the packet after the events before it, as on one thread.
+    int valid = n;
+    std::exception_ptr badEvent;
+    for (int i = 0; i < n; i++)
+    {
+        Admission& a = admitted_[(size_t)i];
+        try
+        {
+            a.rectified = admit(ev(i));
+        }
+        catch (...)
+        {
+            badEvent = std::current_exception();
+            valid = i;
+            break;
+        }
+        a.coldStartEnd = coldStartEnd_;
+        admittedRows_[(size_t)i] = a.rectified.x < 0 ? -1 : a.rectified.y;
+        times_[(size_t)i] = ev(i).t;
+        if (a.rectified.x < 0)
+        {
+            StereoEventEstimate outside;
+            outside.rectified = a.rectified;
+            outside.flags = STEREO_OUTSIDE;
+            store(i, outside);
+        }
+    }
+    const int reach = eventRowReach();
+    const int bands = std::max(1, std::min(numThreads_, size_.height / (2 * reach + 1)));
+    const std::vector<int> first = RowBandScheduler::splitRows(admittedRows_, valid, size_.height, bands, 2 * reach + 1);
+    maps_[0].setRowBands(first);
+    maps_[1].setRowBands(first);
+    if (bandScratch_.size() < (size_t)bands)
+    {
+        bandScratch_.resize((size_t)bands);
+        for (MatchScratch& s : bandScratch_)
+            sizeScratch(s);
+    }
+    RowBandScheduler::Operations ops;
+    // The band's earliest expiry over both maps (the left map's first on a tie); the token is the map.
+    ops.earliestExpiry = [this](int b, int64& time, int& row, int& map) {
+        bool found = false;
+        time = std::numeric_limits<int64>::max();
+        for (int c = 0; c < 2; c++)
+        {
+            int64 t;
+            int y;
+            if (maps_[c].earliestExpiry(b, t, y) && t < time)
+            {
+                map = c;
+                time = t;
+                row = y;
+                found = true;
+            }
+        }
+        return found;
+    };
+    ops.expire = [this](int b, int map) { maps_[map].expireEarliest(b); };
+    ops.process = [&](int b, int i) {
+        const Admission& a = admitted_[(size_t)i];
+        StereoEventEstimate est;
+        est.rectified = a.rectified;
+        processAdmitted(ev(i), a.rectified, a.coldStartEnd, bandScratch_[(size_t)b], est);
+        store(i, est);
+    };
+    const std::exception_ptr failure = bands_.run(first, size_.height, reach, expiryRowReach(), admittedRows_, times_, valid, ops);
+    for (int b = 0; b < bands; b++)
+        for (int c = 0; c < 2; c++)
+            addStatusCounts(*estimators_[c], bandScratch_[(size_t)b].lifetimes[c]);
+    if (failure)
+        std::rethrow_exception(failure);
+    if (badEvent)
+        std::rethrow_exception(badEvent);
+}
+
+// ---- parameters
+
+void StereoEventMatcherImpl::reset()
+{
+    const int margin = std::max(aggregationWindow_ / 2, descriptorWindow_ / 2);
+    for (int c = 0; c < 2; c++)
+    {
+        maps_[c].configure(size_, descriptorWindow_, maxVectorLength_, margin);
+        estimators_[c]->reset();
+        lastEstimate_[c].assign((size_t)size_.area(), PixelEstimate());
+        lastEventTime_[c].assign((size_t)size_.area(), 0);
+    }
+    frames_.configure(size_, minDisparity_, maxDisparity_, frameWindow_);
+    lastTime_ = std::numeric_limits<int64>::min();
+    sizeScratch(scratch_);
+    for (MatchScratch& s : bandScratch_)
+        sizeScratch(s);
+}
+
+void StereoEventMatcherImpl::sizeScratch(MatchScratch& s) const
+{
+    s.neighbours.resize((size_t)costWindow_ * costWindow_);
+    const size_t range = (size_t)(maxDisparity_ - minDisparity_ + 1);
+    s.candidates.resize(range);
+    s.offsets.resize(range);
+    s.cost.resize(range);
+}
+
+void StereoEventMatcherImpl::setCalibration(const StereoCalibration& calibration)
+{
+    if (calibration.empty())
+    {
+        calibration_ = StereoCalibration();
+        for (std::vector<int>& l : lut_)
+            l.clear();
+        focalBaseline_ = 0;
+        reset();
+        return;
+    }
+    calibration.validate();
+    if (calibration.imageSize != size_)
+        CV_Error_(Error::StsBadArg, ("StereoEventMatcher: the calibration is for %d x %d sensors but the matcher's "
+                                     "sensor is %d x %d", calibration.imageSize.width, calibration.imageSize.height,
+                                     size_.width, size_.height));
+    for (int c = 0; c < 2; c++)
+        lut_[c] = buildRectificationTable(calibration, c);
+    calibration_ = calibration;
+    focalBaseline_ = calibration.focalLength() * calibration.baseline();
+    reset();
+}
+
+Ptr<LifetimeEstimator> StereoEventMatcherImpl::getLifetimeEstimator(int camera) const
+{
+    CV_CheckGE(camera, 0, "StereoEventMatcher::getLifetimeEstimator: camera is CAMERA_LEFT or CAMERA_RIGHT");
+    CV_CheckLE(camera, 1, "StereoEventMatcher::getLifetimeEstimator: camera is CAMERA_LEFT or CAMERA_RIGHT");
+    return estimators_[camera];
+}
+
+void StereoEventMatcherImpl::setMode(int mode)
+{
+    checkMode(mode);
+    mode_ = mode;
+    reset();
+}
+
+void StereoEventMatcherImpl::setSensorSize(Size s)
+{
+    if (s.width <= 0 || s.height <= 0 || s.width > 32768 || s.height > 32768)
+        CV_Error_(Error::StsBadArg, ("StereoEventMatcher: sensor size %d x %d is not valid", s.width, s.height));
+    size_ = s;
+    for (const Ptr<LifetimeEstimator>& est : estimators_)
+        est->setSensorSize(s);
+    if (!calibration_.empty() && calibration_.imageSize != s)
+    {
+        calibration_ = StereoCalibration();
+        lut_[0].clear();
+        lut_[1].clear();
+        focalBaseline_ = 0;
+    }
+    reset();
+}
+
+void StereoEventMatcherImpl::setDescriptorWindow(int n)
+{
+    descriptorWindow_ = oddWindow(n, 1, 15, "descriptor window");
+    reset();
+}
+
+void StereoEventMatcherImpl::setMaxVectorLength(int r)
+{
+    if (r < 0 || r > 7)
+        CV_Error_(Error::StsBadArg, ("StereoEventMatcher: max vector length %d; must be 0..7 px", r));
+    maxVectorLength_ = r;
+    reset();
+}
+
+void StereoEventMatcherImpl::setCostWindow(int w)
+{
+    costWindow_ = oddWindow(w, 1, 31, "cost window");
+    aggregationWindow_ = std::max(aggregationWindow_, costWindow_);
+    reset();
+}
+
+void StereoEventMatcherImpl::setAggregationWindow(int a)
+{
+    aggregationWindow_ = oddWindow(a, costWindow_, 31, "aggregation window (>= the cost window)");
+    reset();
+}
+
+void StereoEventMatcherImpl::setUniquenessRatio(int u)
+{
+    if (u < 0 || u > 99)
+        CV_Error_(Error::StsBadArg, ("StereoEventMatcher: uniqueness ratio %d; must be 0..99 %%", u));
+    uniquenessRatio_ = u;
+}
+
+void StereoEventMatcherImpl::setFrameWindow(double us)
+{
+    frameWindow_ = duration(us, "frame window");
+    reset();
+}
+
+void StereoEventMatcherImpl::setActiveDistance(double px)
+{
+    if (!(px >= 0.1 && px <= 100))
+        CV_Error_(Error::StsBadArg, ("StereoEventMatcher: active distance %g px; must be 0.1..100 px (1: active "
+                                     "for one lifetime, as in the paper)", px));
+    activeDistance_ = px;
+}
+
+void StereoEventMatcherImpl::setNumThreads(int threads)
+{
+    if (threads < 1 || threads > 64)
+        CV_Error_(Error::StsBadArg, ("StereoEventMatcher: %d threads; must be 1..64", threads));
+    numThreads_ = threads;
+}
+
+void StereoEventMatcherImpl::write(FileStorage& fs) const
+{
+    writeFormat(fs);
+    fs << "mode" << getStereoModeName(mode_) << "sensorWidth" << size_.width << "sensorHeight" << size_.height
+       << "minDisparity" << minDisparity_ << "maxDisparity" << maxDisparity_ << "descriptorWindow" << descriptorWindow_
+       << "maxVectorLength" << maxVectorLength_ << "costWindow" << costWindow_ << "aggregationWindow"
+       << aggregationWindow_ << "uniquenessRatio" << uniquenessRatio_ << "fixedInterval" << (double)fixedInterval_
+       << "frameWindow" << (double)frameWindow_ << "maxLifetime" << (double)maxLifetime_ << "activeDistance"
+       << activeDistance_;
+    fs << "lifetimeEstimator" << "{";
+    estimators_[0]->write(fs);
+    fs << "}";
+    if (!calibration_.empty())
+    {
+        fs << "calibration" << "{";
+        calibration_.write(fs);
+        fs << "}";
+    }
+}
+
+void StereoEventMatcherImpl::read(const FileNode& fn)
+{
+    auto num = [&](const char* key, double def) { return fn[key].empty() ? def : (double)fn[key]; };
+    if (!fn["mode"].empty())
+    {
+        const int m = findStereoMode((String)fn["mode"]);
+        if (m < 0)
+            CV_Error_(Error::StsParseError, ("StereoEventMatcher: unknown mode '%s'", ((String)fn["mode"]).c_str()));
+        checkMode(m);
+        mode_ = m;
+    }
+    const Size s((int)num("sensorWidth", size_.width), (int)num("sensorHeight", size_.height));
+    if (s != size_)
+        setSensorSize(s);
+    setDisparityRange((int)num("minDisparity", minDisparity_), (int)num("maxDisparity", maxDisparity_));
+    setDescriptorWindow((int)num("descriptorWindow", descriptorWindow_));
+    setMaxVectorLength((int)num("maxVectorLength", maxVectorLength_));
+    setCostWindow((int)num("costWindow", costWindow_));
+    setAggregationWindow((int)num("aggregationWindow", aggregationWindow_));
+    setUniquenessRatio((int)num("uniquenessRatio", uniquenessRatio_));
+    setFixedInterval(num("fixedInterval", (double)fixedInterval_));
+    setFrameWindow(num("frameWindow", (double)frameWindow_));
+    setMaxLifetime(num("maxLifetime", (double)maxLifetime_));
+    setActiveDistance(num("activeDistance", activeDistance_));
+    if (!fn["lifetimeEstimator"].empty())
+        for (const Ptr<LifetimeEstimator>& est : estimators_)
+            est->read(fn["lifetimeEstimator"]);
+    if (!fn["calibration"].empty())
+    {
+        StereoCalibration c;
+        c.read(fn["calibration"], "StereoEventMatcher calibration");
+        setCalibration(c);
+    }
+    reset();
+}
+
+void StereoEventMatcherImpl::checkMode(int mode)
+{
+    if (mode < STEREO_COUPLED || mode > STEREO_FRAME_SGBM)
+        CV_Error_(Error::StsBadArg, ("StereoEventMatcher: mode %d; use a StereoMatchMode (0..3)", mode));
+}
+
+int StereoEventMatcherImpl::oddWindow(int n, int lo, int hi, const char* what)
+{
+    if (n < lo || n > hi || n % 2 == 0)
+        CV_Error_(Error::StsBadArg, ("StereoEventMatcher: %s %d; must be odd, %d..%d", what, n, lo, hi));
+    return n;
+}
+
+int64 StereoEventMatcherImpl::duration(double us, const char* what)
+{
+    if (!(us >= 1) || us > 1e12)
+        CV_Error_(Error::StsBadArg, ("StereoEventMatcher: %s %g us; must be 1 us .. 1e12 us", what, us));
+    return (int64)std::llround(us);
+}
+
+void StereoEventMatcherImpl::setDisparityRange(int lo, int hi)
+{
+    if (lo < 0 || hi < lo || hi > 1024)
+        CV_Error_(Error::StsBadArg, ("StereoEventMatcher: disparity range [%d, %d]; need 0 <= min <= max <= 1024", lo, hi));
+    minDisparity_ = lo;
+    maxDisparity_ = hi;
+    reset();
+}
+
+// How many rows above and below its own an event's processing reads or writes: the aggregation window's
+// descriptors (match), the matched window (its median lifetime), the left-right check's 3 x 3, the vectors
+// an activation or deactivation changes (2 x the max length for the re-search) and their votes, the plane
+// fit's window. Operations further apart in rows than the sum of their reaches touch disjoint state.
+int StereoEventMatcherImpl::eventRowReach() const
+{
+    return std::max({ aggregationWindow_ / 2, costWindow_ / 2, 1, expiryRowReach(), lifetimeRowReach(*estimators_[0]),
+                      lifetimeRowReach(*estimators_[1]) });
+}
+
+// ---- rendering
+
+void StereoEventMatcherImpl::renderDisparity(double t, OutputArray image, int camera, bool colourBar) const
+{
+    CV_CheckGE(camera, 0, "StereoEventMatcher::renderDisparity: camera is CAMERA_LEFT or CAMERA_RIGHT");
+    CV_CheckLE(camera, 1, "StereoEventMatcher::renderDisparity: camera is CAMERA_LEFT or CAMERA_RIGHT");
+    const int barWidth = colourBar ? 56 : 0;
+    image.create(size_.height, size_.width + barWidth, CV_8UC3);
+    Mat img = image.getMat();
+    img.setTo(Scalar::all(0));
+    const Mat lut = colourLut();
+    const std::vector<PixelEstimate>& last = lastEstimate_[camera];
+    const std::vector<int64>& lastTime = lastEventTime_[camera];
+    for (int y = 0; y < size_.height; y++)
+    {
+        Vec3b* row = img.ptr<Vec3b>(y);
+        for (int x = 0; x < size_.width; x++)
+        {
+            const size_t i = (size_t)y * size_.width + x;
+            const PixelEstimate& q = last[i];
+            if (q.disparity < 0 || !((double)lastTime[i] <= t && t < (double)q.until))
+                continue;
+            row[x] = lut.at<Vec3b>(colourIndex(q.disparity));
+        }
+    }
+    if (!colourBar)
+        return;
+    // Bar: max disparity at the top, min at the bottom, labelled.
+    const int x0 = size_.width + 6, x1 = x0 + 12, top = 12, bottom = size_.height - 12;
+    for (int y = top; y <= bottom; y++)
+    {
+        const double d = maxDisparity_ - (double)(y - top) / std::max(1, bottom - top) * (maxDisparity_ - minDisparity_);
+        line(img, Point(x0, y), Point(x1, y), Scalar(lut.at<Vec3b>(colourIndex((float)d))), 1);
+    }
+    const Scalar white(255, 255, 255);
+    putText(img, std::to_string(maxDisparity_), Point(x1 + 3, top + 8), FONT_HERSHEY_PLAIN, 0.8, white, 1);
+    putText(img, std::to_string(minDisparity_), Point(x1 + 3, bottom), FONT_HERSHEY_PLAIN, 0.8, white, 1);
+    putText(img, "px", Point(x1 + 3, (top + bottom) / 2 + 4), FONT_HERSHEY_PLAIN, 0.8, white, 1);
+}
+
+Mat StereoEventMatcherImpl::colourLut() const
+{
+    Mat ramp(256, 1, CV_8U), lut;
+    for (int i = 0; i < 256; i++)
+        ramp.at<uchar>(i) = (uchar)i;
+    applyColorMap(ramp, lut, COLORMAP_JET);
+    return lut;
+}
+
+int StereoEventMatcherImpl::colourIndex(float d) const
+{
+    const double span = std::max(1, maxDisparity_ - minDisparity_);
+    return std::max(0, std::min(255, (int)std::lround((d - minDisparity_) / span * 255)));
+}
+
+}  // namespace detail
+
+Ptr<StereoEventMatcher> StereoEventMatcher::create(Size sensorSize, int mode)
+{
+    return makePtr<detail::StereoEventMatcherImpl>(sensorSize, mode);
+}
+
+String getStereoModeName(int mode)
+{
+    switch (mode)
+    {
+    case STEREO_COUPLED: return "coupled";
+    case STEREO_DECOUPLED: return "decoupled";
+    case STEREO_FIXED_INTERVAL: return "fixed";
+    case STEREO_FRAME_SGBM: return "sgbm";
+    default: CV_Error_(Error::StsBadArg, ("getStereoModeName: mode %d is not a StereoMatchMode", mode));
+    }
+}
+
+int findStereoMode(const String& name)
+{
+    const std::string n = detail::toLowerAscii(name);
+    for (int m = STEREO_COUPLED; m <= STEREO_FRAME_SGBM; m++)
+        if (n == getStereoModeName(m))
+            return m;
+    return -1;
+}
+
+}  // namespace event
+}  // namespace cv

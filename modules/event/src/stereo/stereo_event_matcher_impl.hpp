@@ -1,0 +1,241 @@
+// This file is part of OpenCV project.
+// It is subject to the license terms in the LICENSE file found in the top-level directory
+// of this distribution and at http://opencv.org/license.html.
+
+#ifndef OPENCV_EVENT_SRC_STEREO_STEREO_EVENT_MATCHER_IMPL_HPP
+#define OPENCV_EVENT_SRC_STEREO_STEREO_EVENT_MATCHER_IMPL_HPP
+
+#include "opencv2/event.hpp"
+#include "lifetime/lifetime_estimation_rows.hpp"
+#include "stereo/descriptor_cost.hpp"
+#include "stereo/frame_sgbm_matcher.hpp"
+#include "stereo/row_band_scheduler.hpp"
+#include "stereo/zou_descriptor_map.hpp"
+
+#include <functional>
+#include <limits>
+#include <vector>
+
+namespace cv {
+namespace event {
+namespace detail {
+
+/** The outcome of matching one event along its row (StereoEventMatcherImpl::match). */
+struct MatchResult
+{
+    float disparity = -1.f;
+    int counterpartX = -1;  // the matched pixel of the other sensor (integer disparity)
+    int flags = 0;          // STEREO_AMBIGUOUS / STEREO_NO_COUNTERPART when no disparity
+};
+
+/** An active event of the matched window: its lifetime and its index in the map's per-pixel arrays. */
+struct Neighbour
+{
+    float lifetime;
+    int index;
+};
+
+/** The working memory of matching one event (one per thread): the candidates as disparity index (disparity -
+min) in increasing order, the byte offset of each one's descriptor in the other sensor from the event's
+column, and their costs (the first `count` of each, sized for the whole disparity range); the matched
+window's lifetimes; the left-right check's disparities; the lifetime estimators' scratch, per camera. */
+struct MatchScratch
+{
+    int count = 0;
+    std::vector<int> candidates;
+    std::vector<ptrdiff_t> offsets;
+    std::vector<unsigned> cost;
+    std::vector<Neighbour> neighbours;
+    std::vector<float> disparities;
+    LifetimeScratch lifetimes[2];
+};
+
+/** StereoEventMatcher's implementation. Its members live in three files by concern:
+stereo_event_matcher.cpp (the per-event pipeline, parameters, rendering), stereo_event_matching.cpp (the
+matching core: candidates, cost, winner, left-right check, matched lifetime) and, for several threads,
+row_band_scheduler.cpp (the order of operations across row bands). */
+class StereoEventMatcherImpl CV_FINAL : public StereoEventMatcher
+{
+public:
+    StereoEventMatcherImpl(Size size, int mode);
+
+    // Smaller packets run on the calling thread: starting the others would cost more than they gain.
+    enum { MIN_EVENTS_FOR_BANDS = 1000 };
+
+    void process(InputArray events, OutputArray disparity, OutputArray lifetime, OutputArray flags, OutputArray depth,
+                 OutputArray flow) CV_OVERRIDE;
+
+    void processEvent(const Event& e, StereoEventEstimate& est) CV_OVERRIDE;
+    void renderDisparity(double t, OutputArray image, int camera, bool colourBar) const CV_OVERRIDE;
+
+    void reset() CV_OVERRIDE;
+    void setCalibration(const StereoCalibration& calibration) CV_OVERRIDE;
+
+    const StereoCalibration& getCalibration() const CV_OVERRIDE { return calibration_; }
+    void loadCalibration(const String& path) CV_OVERRIDE { setCalibration(readStereoCalibration(path)); }
+
+    Ptr<LifetimeEstimator> getLifetimeEstimator(int camera) const CV_OVERRIDE;
+    int getMode() const CV_OVERRIDE { return mode_; }
+
+    void setMode(int mode) CV_OVERRIDE;
+    Size getSensorSize() const CV_OVERRIDE { return size_; }
+
+    void setSensorSize(Size s) CV_OVERRIDE;
+    int getMinDisparity() const CV_OVERRIDE { return minDisparity_; }
+
+    void setMinDisparity(int d) CV_OVERRIDE { setDisparityRange(d, maxDisparity_); }
+    int getMaxDisparity() const CV_OVERRIDE { return maxDisparity_; }
+
+    void setMaxDisparity(int d) CV_OVERRIDE { setDisparityRange(minDisparity_, d); }
+    int getDescriptorWindow() const CV_OVERRIDE { return descriptorWindow_; }
+
+    void setDescriptorWindow(int n) CV_OVERRIDE;
+    int getMaxVectorLength() const CV_OVERRIDE { return maxVectorLength_; }
+
+    void setMaxVectorLength(int r) CV_OVERRIDE;
+    int getCostWindow() const CV_OVERRIDE { return costWindow_; }
+
+    void setCostWindow(int w) CV_OVERRIDE;
+    int getAggregationWindow() const CV_OVERRIDE { return aggregationWindow_; }
+
+    void setAggregationWindow(int a) CV_OVERRIDE;
+    int getUniquenessRatio() const CV_OVERRIDE { return uniquenessRatio_; }
+
+    void setUniquenessRatio(int u) CV_OVERRIDE;
+    double getFixedInterval() const CV_OVERRIDE { return (double)fixedInterval_; }
+
+    void setFixedInterval(double us) CV_OVERRIDE { fixedInterval_ = duration(us, "fixed interval"); }
+    double getFrameWindow() const CV_OVERRIDE { return (double)frameWindow_; }
+
+    void setFrameWindow(double us) CV_OVERRIDE;
+    double getMaxLifetime() const CV_OVERRIDE { return (double)maxLifetime_; }
+
+    void setMaxLifetime(double us) CV_OVERRIDE { maxLifetime_ = duration(us, "max lifetime"); }
+    double getActiveDistance() const CV_OVERRIDE { return activeDistance_; }
+
+    void setActiveDistance(double px) CV_OVERRIDE;
+    int getNumThreads() const CV_OVERRIDE { return numThreads_; }
+
+    void setNumThreads(int threads) CV_OVERRIDE;
+    void write(FileStorage& fs) const CV_OVERRIDE;
+
+    void read(const FileNode& fn) CV_OVERRIDE;
+    String getDefaultName() const CV_OVERRIDE { return "StereoEventMatcher"; }
+
+private:
+    // Per pixel of each sensor, the end of its last event's activity and its disparity (-1: none), for the
+    // left-right check and for renderDisparity. One struct: the check reads both together. The event's time,
+    // which only the rendering reads, lies apart (lastEventTime_), so that a row of the check spans fewer
+    // cache lines (16 bytes per pixel instead of 24).
+    struct PixelEstimate
+    {
+        int64 until = 0;
+        float disparity = -1.f;
+    };
+    // What process() stores for event i.
+    typedef std::function<void(int, const StereoEventEstimate&)> StoreFn;
+
+    // ---- pipeline (stereo_event_matcher.cpp)
+    // processEvent after admit() and the expiries due: the event at rectified pixel r, inside the image.
+    // Reads and writes only rows within eventRowReach() of r.y, with its own scratch: see processInBands().
+    void processAdmitted(const Event& e, Point r, int64 coldStartEnd, MatchScratch& s, StereoEventEstimate& est);
+
+    void sizeScratch(MatchScratch& s) const;
+    static void checkMode(int mode);
+
+    static int oddWindow(int n, int lo, int hi, const char* what);
+    static int64 duration(double us, const char* what);
+
+    void setDisparityRange(int lo, int hi);
+
+    // Checks the event (camera, sensor bounds, time order) and returns its rectified pixel, (-1, -1) when it
+    // falls outside the rectified image.
+    Point admit(const Event& e);
+
+    void remember(int c, Point r, int64 t, int64 activeFor, float disparity);
+
+    // How long an event with this lifetime (us per pixel) stays active: until its edge has moved
+    // activeDistance_ pixels, at most maxLifetime_.
+    int64 activeSpan(double lifetime) const;
+
+    // How many rows above and below its own an event's processing reads or writes: the aggregation window's
+    // descriptors (match), the matched window (its median lifetime), the left-right check's 3 x 3, the vectors
+    // an activation or deactivation changes (2 x the max length for the re-search) and their votes, the plane
+    // fit's window. Operations further apart in rows than the sum of their reaches touch disjoint state.
+    int eventRowReach() const;
+
+    // The same for an expiry (a deactivation).
+    int expiryRowReach() const { return std::max(2 * maxVectorLength_, maxVectorLength_ + descriptorWindow_ / 2); }
+
+    Mat colourLut() const;
+    int colourIndex(float d) const;
+
+    void processFrames(const Mat_<Event>& ev, const StoreFn& store);
+    // process() on several threads with the results of one: see RowBandScheduler.
+    void processInBands(const Mat_<Event>& ev, const StoreFn& store);
+
+    // ---- matching core (stereo_event_matching.cpp)
+    // Adds the SAD over the rectangle [x0, x1] x [y0, y1] (relative to the event) to every candidate's cost;
+    // returns the same sum against an empty map (the event's side alone).
+    unsigned addRect(const ZouDescriptorMap& self, const ZouDescriptorMap& other, Point r, int x0, int x1, int y0, int y1,
+                     MatchScratch& s) const;
+
+    // Clips the rectangle [x0, x1] x [y0, y1] relative to the event's pixel r to the image; false when nothing is
+    // left. Cost windows cover only the event's own image: past its border both sensors' descriptors are zero for
+    // a candidate that also runs past the other border (d near 0 at the right border of the left image), which
+    // would match "nothing" against "nothing" for free and pull border events toward that candidate.
+    bool clipToImage(Point r, int& x0, int& x1, int& y0, int& y1) const;
+
+    // Sum of the descriptor values over [x0, x1] x [y0, y1] relative to q: the cost of matching against nothing.
+    unsigned rectMass(const ZouDescriptorMap& map, Point q, int x0, int x1, int y0, int y1) const;
+
+    // Matches the event at r (camera c, polarity p, time t) along its row.
+    MatchResult match(int c, Point r, int p, int64 t, MatchScratch& s) const;
+
+    // Left-right check against the other sensor's own estimates: the active events around the counterpart
+    // were matched the other way (toward this sensor); when they have disparities, their median must agree
+    // within one pixel. Without any there is nothing to contradict the match.
+    bool consistent(int c, int x, int y, double d, int64 t, MatchScratch& s) const;
+
+    // Median lifetime (and the flow of that event) of the active events of polarity p in the cost window
+    // around (x, y) of sensor c. False when none has a lifetime.
+    bool matchedLifetime(int c, int x, int y, int p, MatchScratch& s, float& lifetime, Vec2f& flow) const;
+
+    Size size_;
+    int mode_ = STEREO_COUPLED;
+    int minDisparity_ = 0, maxDisparity_ = 40;
+    int descriptorWindow_ = 3, maxVectorLength_ = 3, costWindow_ = 9, aggregationWindow_ = 17, uniquenessRatio_ = 15;
+    int64 fixedInterval_ = 10000, frameWindow_ = 33000, maxLifetime_ = 100000;
+    double activeDistance_ = 2.5;
+    StereoCalibration calibration_;
+    std::vector<int> lut_[2];  // raw pixel -> rectified pixel index (-1: outside); empty: no calibration
+    double focalBaseline_ = 0;
+    Ptr<LifetimeEstimator> estimators_[2];
+    ZouDescriptorMap maps_[2];
+    FrameSgbmMatcher frames_;
+    std::vector<PixelEstimate> lastEstimate_[2];
+    std::vector<int64> lastEventTime_[2];
+    int64 lastTime_ = std::numeric_limits<int64>::min();
+    int64 coldStartEnd_ = 0;  // the end of the cold start: see admit()
+    // The cost kernel for this CPU (candidates' costs and window masses), fetched once.
+    DescriptorRectSadBatchFn rectSadBatch_ = descriptorRectSadBatchFunction();
+    MatchScratch scratch_;  // processEvent's
+    int numThreads_ = 1;
+    // processInBands: the scheduler, each band's scratch, each event's admission.
+    struct Admission
+    {
+        Point rectified;
+        int64 coldStartEnd;
+    };
+    RowBandScheduler bands_;
+    std::vector<MatchScratch> bandScratch_;
+    std::vector<Admission> admitted_;
+    std::vector<int> admittedRows_;
+    std::vector<int64> times_;
+};
+
+}  // namespace detail
+}  // namespace event
+}  // namespace cv
+
+#endif  // OPENCV_EVENT_SRC_STEREO_STEREO_EVENT_MATCHER_IMPL_HPP
