@@ -41,6 +41,6 @@ inline bool sameBits(const cv::Mat& a, const cv::Mat& b)
     return true;
 }
 
-}
+}  // namespace opencv_test
 
-#endif
+#endif  // OPENCV_EVENT_TEST_COMMON_HPP

@@ -8,35 +8,15 @@
 #include "opencv2/ts.hpp"
 #include "opencv2/event.hpp"
 #include "test_common.hpp"
+#include "test_event_helpers.hpp"
 
 #include <cstdio>
-#include <fstream>
 #include <map>
 #include <numeric>
 
 namespace opencv_test {
 using namespace cv::event;
 using cv::event::Event;  // perf:: and cv::cuda also have an Event
+}  // namespace opencv_test
 
-/** Every event @p cap delivers, read in batches of @p batch events (batches that need not line up with the
-file's own packets). */
-inline std::vector<Event> readAllEvents(EventCapture& cap, int batch = 1 << 20)
-{
-    cap.set(EVENT_CAP_PROP_BATCH_EVENTS, batch);
-    std::vector<Event> all, packet;
-    while (cap.read(packet))
-        all.insert(all.end(), packet.begin(), packet.end());
-    return all;
-}
-
-/** Writes @p content to a fresh temporary file with the given suffix and returns its path. */
-inline std::string writeTempFile(const std::string& content, const std::string& suffix)
-{
-    const std::string path = cv::tempfile(suffix.c_str());
-    std::ofstream out(path.c_str(), std::ios::binary);
-    out.write(content.data(), (std::streamsize)content.size());
-    return path;
-}
-}
-
-#endif
+#endif  // OPENCV_EVENT_TEST_PRECOMP_HPP
