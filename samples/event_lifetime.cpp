@@ -14,6 +14,8 @@
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
+#include "sample_progress.hpp"
+
 #include <cstdio>
 #include <deque>
 #include <iostream>
@@ -86,6 +88,7 @@ int main(int argc, char** argv)
         std::deque<Event> recent;  // events of the last frameMs, for the fixed-window picture
         std::vector<Event> packet;
         int64 pictures = 0, processed = 0;
+        SampleProgress progress;
         const int zoom = std::max(1, 480 / std::max(size.width, size.height));
         const int64 t0 = getTickCount();
         while (cap.read(packet))
@@ -121,10 +124,7 @@ int main(int argc, char** argv)
             char name[64];
             std::snprintf(name, sizeof(name), "/active_%05lld.png", (long long)pictures++);
             imwrite(output + name, pair);
-            const double progress = cap.get(EVENT_CAP_PROP_PROGRESS);
-            std::cerr << "\r[" << std::string((size_t)std::lround(std::max(0.0, progress) * 40), '#')
-                      << std::string(40 - (size_t)std::lround(std::max(0.0, progress) * 40), '.') << "] "
-                      << (now - first) / 1e6 << " s, " << processed << " events" << std::flush;
+            progress.update(cap.get(EVENT_CAP_PROP_PROGRESS), format("%.2f s, %lld events", (now - first) / 1e6, (long long)processed));
             if (maxMs > 0 && now - first >= maxMs * 1000)
                 break;
         }
@@ -133,7 +133,8 @@ int main(int argc, char** argv)
         const double secs = (getTickCount() - t0) / getTickFrequency();
         const double fitted = est->getStatusCount(LIFETIME_FITTED), predicted = est->getStatusCount(LIFETIME_PREDICTED);
         const double noise = est->getStatusCount(LIFETIME_NOISE);
-        std::cout << "\n" << processed << " events of camera " << camera << ": " << fitted << " fitted, " << predicted
+        progress.finish(cap.get(EVENT_CAP_PROP_PROGRESS), format("%lld events", (long long)processed));
+        std::cout << processed << " events of camera " << camera << ": " << fitted << " fitted, " << predicted
                   << " predicted (shortcut), " << noise << " noise; " << pictures << " pictures in " << output
                   << "; " << processed / std::max(1e-9, secs) / 1e6 << " Mev/s including I/O and pictures\n";
         return 0;

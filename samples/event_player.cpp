@@ -13,6 +13,8 @@
 #include <opencv2/imgproc.hpp>
 #include <opencv2/videoio.hpp>
 
+#include "sample_progress.hpp"
+
 #include <cstdio>
 #include <iostream>
 
@@ -50,16 +52,6 @@ Mat render(const EventSurface& s, int64 t, const Options& o)
     Mat bgr;
     merge(std::vector<Mat>{ off, Mat::zeros(on.size(), CV_8U), on }, bgr);
     return bgr;
-}
-
-void progressBar(double fraction, int64 frames)
-{
-    const int width = 40;
-    const int filled = fraction < 0 ? 0 : (int)std::lround(std::min(1.0, fraction) * width);
-    std::cerr << "\r[" << std::string(filled, '#') << std::string(width - filled, '.') << "] ";
-    if (fraction >= 0)
-        std::cerr << (int)std::lround(100 * std::min(1.0, fraction)) << "% ";
-    std::cerr << frames << " frames" << std::flush;
 }
 
 bool parse(int argc, char** argv, Options& o)
@@ -130,6 +122,7 @@ int main(int argc, char** argv)
         VideoWriter video;
         std::vector<Event> packet;
         int64 frames = 0;
+        SampleProgress progress;
         while ((o.maxFrames < 0 || frames < o.maxFrames) && cap.read(packet))
         {
             surface[0]->clearCounts();
@@ -160,12 +153,10 @@ int main(int argc, char** argv)
                 imwrite(o.output + name, frame);
             }
             frames++;
-            if (frames % 10 == 0)
-                progressBar(cap.get(EVENT_CAP_PROP_PROGRESS), frames);
+            progress.update(cap.get(EVENT_CAP_PROP_PROGRESS), std::to_string(frames) + " frames");
         }
-        progressBar(cap.get(EVENT_CAP_PROP_PROGRESS), frames);
-        std::cerr << "\n"
-                  << cap.get(EVENT_CAP_PROP_EVENTS_DELIVERED) << " events, " << frames << " frames of " << o.windowMs
+        progress.finish(cap.get(EVENT_CAP_PROP_PROGRESS), std::to_string(frames) + " frames");
+        std::cerr << cap.get(EVENT_CAP_PROP_EVENTS_DELIVERED) << " events, " << frames << " frames of " << o.windowMs
                   << " ms" << (writePngs ? " in " + o.output : std::string()) << "\n";
         return 0;
     }

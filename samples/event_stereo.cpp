@@ -4,11 +4,13 @@
 //   event_stereo [--input FILE | --left FILE --right FILE | --live] [--calib FILE] [--sensor WxH]
 //                [--left-camera-value 0|1] [--mode coupled|decoupled|fixed|sgbm]
 //                [--min-disparity PX] [--max-disparity PX] [--frame-ms MS] [--threads N] [--no-csv]
-//                [--output DIR] [--scene NAME --duration-ms MS]   (no input: simulate, with ground truth)
+//                [--all-frames] [--output DIR] [--scene NAME --duration-ms MS]   (no input: simulate, with ground truth)
 //
 // Writes into DIR: events.csv (t,x,y,p,camera,disparity,depth,lifetime,flags per event, x/y rectified),
-// disparity_NNNNN.png every --frame-ms (left | right active events coloured by disparity, the paper's
-// Figure 1; plus the ground truth below when simulated), disparity.avi when a video writer is available,
+// disparity.avi with one frame per --frame-ms window when a video writer is available (left | right active
+// events coloured by disparity, the paper's Figure 1; plus the ground truth below when simulated), the same
+// picture as disparity_NNNNN.png (NNNNN: the window) for the first window and one per eighth of the run
+// (--all-frames: every window),
 // disparity_histogram.png and summary.md (events/s, share with disparity and with lifetime, dominant
 // disparity, input events outside the sensor or going back in time, and errors against the ground truth
 // when simulated). Progress goes to stderr.
@@ -18,6 +20,8 @@
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 #include <opencv2/videoio.hpp>
+
+#include "sample_progress.hpp"
 
 #include <algorithm>
 #include <cstdio>
@@ -34,7 +38,7 @@ namespace {
 struct Options
 {
     std::string input, left, right, calib, output = "output/event_stereo", scene = "two_planes", mode = "coupled";
-    bool live = false, csv = true;
+    bool live = false, csv = true, allFrames = false;
     Size sensor;
     int leftCameraValue = 0, minDisparity = 0, maxDisparity = 40;
     // Row bands on their own threads (StereoEventMatcher::setNumThreads): the same results as one thread.
@@ -47,7 +51,7 @@ void usage()
     std::cerr << "usage: event_stereo [--input FILE | --left FILE --right FILE | --live] [--calib FILE]\n"
                  "       [--sensor WxH] [--left-camera-value 0|1] [--mode coupled|decoupled|fixed|sgbm]\n"
                  "       [--min-disparity PX] [--max-disparity PX] [--frame-ms MS] [--threads N (default: CPUs, at most 4)]\n"
-                 "       [--no-csv] [--output DIR]\n"
+                 "       [--no-csv] [--all-frames] [--output DIR]\n"
                  "       [--scene plane|two_planes|moving_line|faint_line|cluttered] [--duration-ms MS]  (no input)\n";
 }
 
@@ -75,6 +79,7 @@ bool parse(int argc, char** argv, Options& o)
         else if (a == "--threads") o.threads = std::stoi(value());
         else if (a == "--no-csv") o.csv = false;
         else if (a == "--output") o.output = value();
+        else if (a == "--all-frames") o.allFrames = true;
         else if (a == "--scene") o.scene = value();
         else if (a == "--duration-ms") o.durationMs = std::stod(value());
         else if (a == "-h" || a == "--help") { usage(); return false; }
@@ -159,13 +164,26 @@ private:
     std::string name_;
 };
 
-void progressBar(double fraction, double events, double seconds)
+// Pictures written by default: the first window and one each time the run passes another eighth (live, where
+// the length is unknown: windows 1, 2, 4, 8, ...). --all-frames writes every window; the video has them all.
+std::string progressText(int64 events, double seconds)
 {
-    const int width = 30;
-    const int filled = fraction < 0 ? 0 : (int)std::lround(std::min(1.0, fraction) * width);
-    std::cerr << "\r[" << std::string((size_t)filled, '#') << std::string((size_t)(width - filled), '.') << "] "
-              << (fraction < 0 ? std::string("live") : std::to_string((int)std::lround(fraction * 100)) + " %") << ", "
-              << (int64)events << " events, " << events / std::max(1e-9, seconds) / 1e6 << " Mev/s   " << std::flush;
+    char text[96];
+    std::snprintf(text, sizeof(text), "%lld events, %.2f Mev/s", (long long)events, (double)events / std::max(1e-9, seconds) / 1e6);
+    return text;
+}
+
+bool isPictureWindow(int64 window, double fraction, int& lastEighth)
+{
+    if (window == 0)
+        return true;
+    if (fraction < 0)
+        return (window & (window - 1)) == 0;
+    const int eighth = (int)std::floor(fraction * 8);
+    if (eighth <= lastEighth)
+        return false;
+    lastEighth = eighth;
+    return true;
 }
 
 Mat histogramPicture(const std::vector<int64>& h, int minDisparity)
@@ -224,7 +242,9 @@ int main(int argc, char** argv)
         VideoWriter video;
         std::vector<int64> histogram((size_t)(opt.maxDisparity - opt.minDisparity + 1), 0);
         int64 events = 0, withDisparity[2] = { 0, 0 }, withLifetime[2] = { 0, 0 }, perCamera[2] = { 0, 0 };
-        int64 candidates = 0, estimated = 0, within1 = 0, pictures = 0;
+        int64 candidates = 0, estimated = 0, within1 = 0, pictures = 0, windows = 0;
+        int lastEighth = 0;
+        SampleProgress progress;
         double absError = 0, seconds = 0;
         std::vector<Event> packet;
         Mat truth, disparity, lifetime, flags, depth, truthDisparity;
@@ -290,16 +310,20 @@ int main(int argc, char** argv)
                 vconcat(row, below, row);
             }
             resize(row, row, Size(), zoom, zoom, INTER_NEAREST);
-            std::snprintf(line, sizeof(line), "/disparity_%05lld.png", (long long)pictures++);
-            imwrite(opt.output + line, row);
-            if (pictures == 1)
+            if (opt.allFrames || isPictureWindow(windows, source.progress(), lastEighth))
+            {
+                std::snprintf(line, sizeof(line), "/disparity_%05lld.png", (long long)windows);
+                imwrite(opt.output + line, row);
+                pictures++;
+            }
+            if (windows++ == 0)
                 video.open(opt.output + "/disparity.avi", VideoWriter::fourcc('M', 'J', 'P', 'G'),
                            std::max(1.0, 1000.0 / opt.frameMs), row.size());
             if (video.isOpened())
                 video.write(row);
-            progressBar(source.progress(), (double)events, seconds);
+            progress.update(source.progress(), progressText(events, seconds));
         }
-        std::cerr << "\n";
+        progress.finish(source.progress(), progressText(events, seconds));
 
         int dominant = -1;
         int64 votes = 0;
@@ -335,7 +359,7 @@ int main(int argc, char** argv)
             text << "| ground truth: density (estimated / non-occluded signal) | " << pct(estimated, candidates) << " % |\n"
                  << "| ground truth: estimates within 1 px | " << pct(within1, estimated) << " % |\n"
                  << "| ground truth: mean absolute disparity error | " << (estimated ? absError / (double)estimated : 0) << " px |\n";
-        text << "| outputs | events.csv, " << pictures << " x disparity_NNNNN.png" << (video.isOpened() ? ", disparity.avi" : "")
+        text << "| outputs | events.csv, " << pictures << " of " << windows << " windows as disparity_NNNNN.png" << (video.isOpened() ? ", disparity.avi" : "")
              << ", disparity_histogram.png |\n";
         std::ofstream(opt.output + "/summary.md") << text.str();
         std::cout << text.str();

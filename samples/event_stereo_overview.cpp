@@ -14,6 +14,8 @@
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
+#include "sample_progress.hpp"
+
 #include <cstdio>
 #include <fstream>
 #include <iostream>
@@ -144,6 +146,7 @@ int main(int argc, char** argv)
         std::map<int, int> disparityVotes;
         int64 counts[2][2] = { { 0, 0 }, { 0, 0 } };
         int64 windows = 0, picturesWritten = 0;
+        SampleProgress progress;
         const int pictureEvery = std::max(1, (int)std::lround(500 / opt.windowMs));  // about 2 per second
         const int zoom = std::max(1, 512 / std::max(size.width, size.height));
         const double first = cap.get(EVENT_CAP_PROP_FIRST_TIMESTAMP_US);
@@ -184,14 +187,13 @@ int main(int argc, char** argv)
                 imwrite(opt.output + name, upscale(row, zoom));
             }
             windows++;
-            if (windows % 30 == 0)
-                std::cerr << "\r" << cap.getSource() << ": " << (now - first) / 1e6 << " s, "
-                          << cap.get(EVENT_CAP_PROP_EVENTS_DELIVERED) << " events" << std::flush;
+            progress.update(cap.get(EVENT_CAP_PROP_PROGRESS), format("%s: %.2f s, %.0f events", cap.getSource().c_str(),
+                                                                     (now - first) / 1e6, cap.get(EVENT_CAP_PROP_EVENTS_DELIVERED)));
         }
         const double seconds = (getTickCount() - t0) / getTickFrequency();
         const double delivered = cap.get(EVENT_CAP_PROP_EVENTS_DELIVERED);
         const double span = cap.get(EVENT_CAP_PROP_POS_US) - first;
-        std::cerr << "\n";
+        progress.finish(cap.get(EVENT_CAP_PROP_PROGRESS), format("%s: %.0f events", cap.getSource().c_str(), delivered));
 
         int dominant = -1, votes = 0, totalVotes = 0;
         for (const auto& kv : disparityVotes)

@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Writes the fuzzers' seed files into test/fuzz/corpus/<target>/ (committed; small).
 
-Each seed is a tiny valid file of its format, built here from the byte layouts of ../shared/docs/formats.md,
+Each seed is a tiny valid file of its format, built here from the byte layouts of doc/formats.md,
 so that the fuzzers start past the magic and header checks. Formats whose container is too rich to write
 by hand here (AEDAT 4.0, ROS bags, HDF5) get their magic only; run.sh adds the real samples of
 ../shared/data/format_samples as extra seeds when they are present (never copied into the repository).

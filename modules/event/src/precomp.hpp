@@ -7,6 +7,7 @@
 
 #include "opencv2/event.hpp"
 #include "opencv2/core/utility.hpp"
+#include "common/cpu_dispatch.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -6,7 +6,7 @@
 
 namespace opencv_test { namespace {
 
-// Fixtures follow shared/docs/formats.md 2.1 (big-endian records, jAER bottom-left mirrored addresses).
+// Fixtures follow doc/formats.md, "AEDAT 1.0 / 2.0" (big-endian records, jAER bottom-left mirrored addresses).
 void appendBE(std::string& s, uint32_t v, int bytes)
 {
     for (int i = bytes - 1; i >= 0; i--)

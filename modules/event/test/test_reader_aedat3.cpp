@@ -6,7 +6,7 @@
 
 namespace opencv_test { namespace {
 
-// Fixtures follow shared/docs/formats.md 2.2 (little-endian packets).
+// Fixtures follow doc/formats.md, "AEDAT 3.1" (little-endian packets).
 void appendLE(std::string& s, uint32_t v, int bytes)
 {
     for (int i = 0; i < bytes; i++)

@@ -11,7 +11,7 @@
 namespace opencv_test { namespace {
 
 #ifdef OPENCV_EVENT_HAVE_HDF5
-// Writes an MVSEC-style file: float64 N x 4 rows [x, y, t (s), p (-1/+1)] per camera (formats.md 2.6).
+// Writes an MVSEC-style file: float64 N x 4 rows [x, y, t (s), p (-1/+1)] per camera (doc/formats.md, "MVSEC-style HDF5").
 void writeMvsec(const std::string& path, const std::vector<std::vector<double>>& left,
                 const std::vector<std::vector<double>>& right)
 {

@@ -10,7 +10,7 @@
 
 namespace opencv_test { namespace {
 
-// ROS1 bag fixtures built from the documented layout (shared/docs/formats.md 2.8), independently of the reader.
+// ROS1 bag fixtures built from the documented layout (doc/formats.md, "ROS1 bag"), independently of the reader.
 template<typename T>
 void put(std::string& s, T v)
 {

@@ -79,7 +79,7 @@ TEST(Event_Capture_RosBag2, evt3_packets_in_cdr_and_two_topics_make_stereo)
 #ifndef OPENCV_EVENT_HAVE_SQLITE3
     throw SkipTestException("built without sqlite3");
 #else
-    // EVT3 words (formats.md 2.4): TIME_HIGH 1 -> 4096 us; TIME_LOW; ADDR_Y; ADDR_X (bit 11 = ON).
+    // EVT3 words (doc/formats.md, "Prophesee RAW"): TIME_HIGH 1 -> 4096 us; TIME_LOW; ADDR_Y; ADDR_X (bit 11 = ON).
     const std::string left1 = eventPacket(640, 480, "evt3", 0, { w(0x8, 1), w(0x6, 10), w(0x0, 5), w(0x2, (1 << 11) | 7) });
     const std::string left2 = eventPacket(640, 480, "evt3", 0, { w(0x6, 30), w(0x0, 6), w(0x2, 8) });  // decoder state carries over
     const std::string right = eventPacket(640, 480, "evt3", 0, { w(0x8, 1), w(0x6, 20), w(0x0, 9), w(0x2, 639) });

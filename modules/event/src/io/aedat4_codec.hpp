@@ -5,7 +5,7 @@
 #ifndef OPENCV_EVENT_SRC_IO_AEDAT4_CODEC_HPP
 #define OPENCV_EVENT_SRC_IO_AEDAT4_CODEC_HPP
 
-// What the AEDAT 4.0 reader and writer share (layout: shared/docs/formats.md 2.3): packet compression
+// What the AEDAT 4.0 reader and writer share (layout: doc/formats.md, "AEDAT 4.0"): packet compression
 // (LZ4 frames, ZSTD frames), a minimal bounds-checked FlatBuffers walker (no flatbuffers library: the
 // schemas are tiny and fixed), and the scan of the XML info node for event streams.
 

@@ -5,7 +5,7 @@
 #ifndef OPENCV_EVENT_SRC_IO_EVT3_DECODER_HPP
 #define OPENCV_EVENT_SRC_IO_EVT3_DECODER_HPP
 
-// Prophesee EVT 3.0 word-stream decoder (shared/docs/formats.md 2.4), shared by the RAW reader and the ROS
+// Prophesee EVT 3.0 word-stream decoder (doc/formats.md, "Prophesee RAW"), shared by the RAW reader and the ROS
 // bag reader (event_camera_msgs/EventPacket with encoding "evt3" carries the same words). Stateful: a
 // stream split into packets decodes as one when the packets are fed in order.
 

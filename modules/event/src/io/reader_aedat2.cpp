@@ -2,7 +2,7 @@
 // It is subject to the license terms in the LICENSE file found in the top-level directory
 // of this distribution and at http://opencv.org/license.html.
 
-// jAER AEDAT 1.0 / 2.0 (layouts: shared/docs/formats.md 2.1). '#' header lines ("#!AER-DAT2.0" for 2.0,
+// jAER AEDAT 1.0 / 2.0 (layouts: doc/formats.md, "AEDAT 1.0 / 2.0"). '#' header lines ("#!AER-DAT2.0" for 2.0,
 // "# AEChip: <class>" for the sensor), then big-endian records: 2.0 = {int32 address, int32 t_us},
 // 1.0 = {int16 address, int32 t_us}. Address layouts: DVS128 (bit 0 = OFF!) and DAVIS (240/346/640);
 // jAER's origin is bottom-left with x mirrored, so both coordinates are flipped to top-left.

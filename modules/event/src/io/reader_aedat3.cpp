@@ -2,7 +2,7 @@
 // It is subject to the license terms in the LICENSE file found in the top-level directory
 // of this distribution and at http://opencv.org/license.html.
 
-// cAER / libcaer AEDAT 3.1 (layouts: shared/docs/formats.md 2.2): '#' header lines closed by "#!END-HEADER",
+// cAER / libcaer AEDAT 3.1 (layouts: doc/formats.md, "AEDAT 3.1"): '#' header lines closed by "#!END-HEADER",
 // then packets with a 28-byte little-endian header {int16 type, int16 source, int32 eventSize,
 // int32 tsOffset, int32 tsOverflow, int32 capacity, int32 number, int32 valid} and capacity x eventSize
 // bytes of events. Polarity events (type 1): {u32 data: valid bit 0, polarity bit 1, y bits 2..16,

@@ -2,7 +2,7 @@
 // It is subject to the license terms in the LICENSE file found in the top-level directory
 // of this distribution and at http://opencv.org/license.html.
 
-// AEDAT 4.0 (DV / dv-processing; layout: shared/docs/formats.md 2.3): magic line, size-prefixed IOHeader
+// AEDAT 4.0 (DV / dv-processing; layout: doc/formats.md, "AEDAT 4.0"): magic line, size-prefixed IOHeader
 // FlatBuffer (compression, data-table position, XML info node), then packets {int32 stream id, int32 size,
 // compressed size-prefixed FlatBuffer}. Only the event (EVTS) streams are decoded; frames, IMU and trigger
 // packets are skipped by length. A file with two event streams is a stereo recording: the first is the

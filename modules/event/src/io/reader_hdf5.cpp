@@ -2,7 +2,7 @@
 // It is subject to the license terms in the LICENSE file found in the top-level directory
 // of this distribution and at http://opencv.org/license.html.
 
-// MVSEC-style HDF5 (shared/docs/formats.md 2.6): /davis/left/events and /davis/right/events, float64 N x 4
+// MVSEC-style HDF5 (doc/formats.md, "MVSEC-style HDF5"): /davis/left/events and /davis/right/events, float64 N x 4
 // rows [x, y, t (s), p (-1/+1; > 0 is ON)], DAVIS346 346 x 260. Rows are read in hyperslabs of one chunk:
 // memory does not grow with the file. A file with both cameras is a stereo recording.
 // Optional: only built when CMake finds libhdf5.

@@ -2,7 +2,7 @@
 // It is subject to the license terms in the LICENSE file found in the top-level directory
 // of this distribution and at http://opencv.org/license.html.
 
-// Prophesee RAW recordings, EVT 2.0 and EVT 3.0 encodings (layouts: shared/docs/formats.md 2.4).
+// Prophesee RAW recordings, EVT 2.0 and EVT 3.0 encodings (layouts: doc/formats.md, "Prophesee RAW").
 // Header: "% key value" lines, optionally closed by "% end". The sensor size comes from "% format ...;
 // width=W;height=H", "% geometry WxH", or else the plugin name (Gen3 640x480, Gen4.1 / IMX636 1280x720,
 // GenX320 320x320). CD events before the first TIME_HIGH word have no time base: they are skipped and

@@ -2,7 +2,7 @@
 // It is subject to the license terms in the LICENSE file found in the top-level directory
 // of this distribution and at http://opencv.org/license.html.
 
-// ROS1 bag v2.0 without ROS (layout: shared/docs/formats.md 2.8). Records {u32 header length, header fields
+// ROS1 bag v2.0 without ROS (layout: doc/formats.md, "ROS1 bag"). Records {u32 header length, header fields
 // "name=value", u32 data length, data}; chunks (op 5) hold compressed records (none / bz2 / lz4 frames).
 // The connection records at the index position name the topics; event topics are those of type
 // dvs_msgs/EventArray or event_camera_msgs/EventPacket, sorted by name: the first is the left camera,

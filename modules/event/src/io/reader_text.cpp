@@ -5,7 +5,7 @@
 // Text recordings: one event per line, columns separated by blanks, tabs or commas.
 //  - RPG Event Camera Dataset: `t x y p`, t in seconds, p in {0, 1};
 //  - E2VID-style: a first line `width height`, then `t x y p`;
-//  - TUM stereo DVS128 (shared/data/stereo_dvs128_tum): `t_us x y p retina`, 1-based x and y;
+//  - TUM stereo DVS128 recordings: `t_us x y p retina`, 1-based x and y;
 // Lines starting with '#' or '%' are comments. Column order, time unit, 1-based coordinates and the camera
 // column are options (EVENT_CAP_PROP_TEXT_*).
 

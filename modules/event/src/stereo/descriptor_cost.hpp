@@ -24,23 +24,36 @@ With @p n = 0 only the mass is computed, and @p b, @p offsets and @p sums are no
 typedef unsigned (*DescriptorRectSadBatchFn)(const uchar* a, const uchar* b, size_t aStep, size_t bStep,
                                          const ptrdiff_t* offsets, int n, int width, int height, unsigned* sums);
 
-/** The DescriptorRectSadFn for this CPU, chosen on the first call: the one-rectangle kernel the SSE2 and
-scalar batch kernels are built from (the matcher itself calls the batch kernel only). The AVX2 version (when
-the CPU has it) is the batch kernel's one-candidate block: each row of the rectangle in 32-byte SADs into
-64-bit lanes, reduced once per call; the SSE2 one does the same in 16-byte SADs; elsewhere the scalar loop.
-All give the same integers. (Exported for opencv_test_event and opencv_perf_event; not public API.) */
+/** The cost kernels of one instruction set. The vector versions (descriptor_cost.simd.hpp, on OpenCV's
+universal intrinsics) cost four candidates per pass over the rectangle, each descriptor of @p a loaded once
+for the four and once for the mass; all versions give the same integers. */
+struct DescriptorCostKernels
+{
+    enum { DESCRIPTOR_BYTES = 24 };  //!< ZouDescriptorMap::DESCRIPTOR_BYTES
+    DescriptorRectSadFn rectSad;
+    DescriptorRectSadBatchFn rectSadBatch;
+    const char* name;  //!< "avx512", "avx2", "sse2", "neon", "simd128" or "scalar"
+};
+
+/** The scalar kernels: the reference the tests compare the vector ones with. */
+DescriptorCostKernels scalarDescriptorCostKernels();
+
+/** The kernels for this CPU, chosen on the first call among the instruction sets the module was built for,
+with OpenCV's CPU detection (OPENCV_CPU_DISABLE=AVX2 turns the AVX2 version off); the environment variable
+OPENCV_EVENT_SCALAR_KERNELS=1 forces the scalar ones. (Exported for opencv_test_event and opencv_perf_event;
+not public API.) */
+CV_EXPORTS const DescriptorCostKernels& descriptorCostKernelsForThisCpu();
+
+/** descriptorCostKernelsForThisCpu().rectSad: the one-rectangle kernel. */
 CV_EXPORTS DescriptorRectSadFn descriptorRectSadFunction();
 
-/** The DescriptorRectSadBatchFn for this CPU, chosen like descriptorRectSadFunction(). The AVX2 version costs
-four candidates per pass over the rectangle: each descriptor of @p a is loaded once for the four, and once for
-the mass, which the first pass sums too. The SSE2 and scalar versions call their one-rectangle kernel once per
-candidate and once against zeros. */
+/** descriptorCostKernelsForThisCpu().rectSadBatch: the kernel the matcher calls. */
 CV_EXPORTS DescriptorRectSadBatchFn descriptorRectSadBatchFunction();
 
-/** The scalar version: the reference the tests compare the SIMD ones with. */
+/** The scalar one-rectangle kernel. */
 CV_EXPORTS unsigned descriptorRectSadScalar(const uchar* a, const uchar* b, size_t aStep, size_t bStep, int width, int height);
 
-/** Name of the version descriptorRectSadFunction() returns ("avx2", "sse2" or "scalar"), for messages. */
+/** Name of the kernels descriptorCostKernelsForThisCpu() returns, for messages. */
 CV_EXPORTS const char* descriptorRectSadKernel();
 
 }  // namespace detail
