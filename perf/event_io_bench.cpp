@@ -1,6 +1,6 @@
 // Reader / writer throughput and memory across formats: prints one Markdown table.
 //
-//   event_io_bench [--events N] [--shared DIR] [--tmp DIR]
+//   event_io_bench [--events=N] [--shared=DIR] [--tmp=DIR]
 //
 // For each writable format it writes N synthetic events (DAVIS346-sized, 1 Mev/s) and reads them back;
 // for each real recording in DIR/format_samples and DIR/stereo_dvs128_tum it reads the file. Per row: events,
@@ -8,6 +8,7 @@
 // /proc/self/clear_refs), which must not grow with N: the readers stream.
 
 #include "resident_memory.hpp"
+#include "sample_command_line.hpp"
 
 #include <opencv2/event.hpp>
 
@@ -56,17 +57,29 @@ bool exists(const std::string& p)
 
 }  // namespace
 
+const char* const keys =
+    "{help h | false          | print this message}"
+    "{events | 20000000       | events in each synthetic recording}"
+    "{shared | ../shared/data | folder holding format_samples/ and stereo_dvs128_tum/ (read when present)}"
+    "{tmp    | /tmp           | where the synthetic recordings are written (and removed)}";
+
 int main(int argc, char** argv)
 {
-    int64 n = 20000000;
-    std::string shared = "../shared/data", tmp = "/tmp";
-    for (int i = 1; i + 1 < argc; i += 2)
+    int64 n = 0;
+    std::string shared, tmp;
+    try
     {
-        const std::string a = argv[i];
-        if (a == "--events") n = (int64)std::stod(argv[i + 1]);
-        else if (a == "--shared") shared = argv[i + 1];
-        else if (a == "--tmp") tmp = argv[i + 1];
-        else { std::cerr << "usage: event_io_bench [--events N] [--shared DIR] [--tmp DIR]\n"; return 2; }
+        SampleCommandLine cmd(argc, argv, keys, "Reading and writing speed and memory of every recording format.");
+        if (cmd.helpShown())
+            return 0;
+        n = (int64)cmd.get<double>("events");
+        shared = cmd.get<std::string>("shared");
+        tmp = cmd.get<std::string>("tmp");
+    }
+    catch (const std::exception& e)
+    {
+        std::cerr << "event_io_bench: " << e.what() << "\n";
+        return 2;
     }
     std::vector<Row> rows;
     const Size size(346, 260);

@@ -8,8 +8,8 @@
 // bands, StereoEventMatcher::setNumThreads): Mev/s, the speed-up over one thread, and whether every output
 // (disparity, lifetime, flags, flow) is bit for bit the one thread's.
 //
-//   event_stereo_table [--duration-ms 500] [--scenes plane,two_planes,faint_line,cluttered]
-//                      [--shared DIR] [--markdown FILE] [--soak-events N] [--threads 1,2]
+//   event_stereo_table [--duration-ms=500] [--scenes=plane,two_planes,faint_line,cluttered]
+//                      [--shared=DIR] [--markdown=FILE] [--soak-events=N] [--threads=1,2]
 //
 // Simulated scenes come with ground truth; the real TUM pairs in DIR/stereo_dvs128_tum (default
 // ../shared/data) are added when present. Events are generated/read before timing: the times are the
@@ -18,6 +18,7 @@
 // shifted on every pass) and prints the resident memory at every tenth: it stays flat.
 
 #include "resident_memory.hpp"
+#include "sample_command_line.hpp"
 
 #include <opencv2/event.hpp>
 
@@ -247,26 +248,37 @@ std::string num(double v, int precision)
 
 }  // namespace
 
+const char* const keys =
+    "{help h      | false                                 | print this message}"
+    "{duration-ms | 500                                   | length of each simulated scene [ms]}"
+    "{scenes      | plane,two_planes,faint_line,cluttered | simulated scenes, comma separated}"
+    "{shared      | ../shared/data                        | folder holding stereo_dvs128_tum/ (the real pairs, when present)}"
+    "{markdown    |                                       | also write the tables to this file}"
+    "{soak-events | 0                                     | stream this many events through one COUPLED matcher, printing its memory}"
+    "{threads     | 1,2                                   | thread counts of the row-band table, comma separated}";
+
 int main(int argc, char** argv)
 {
-    double durationMs = 500;
+    double durationMs = 0;
     int64 soakEvents = 0;
-    std::string scenes = "plane,two_planes,faint_line,cluttered", shared = "../shared/data", markdown, threadList = "1,2";
-    for (int i = 1; i + 1 < argc; i += 2)
+    std::string scenes, shared, markdown, threadList;
+    try
     {
-        const std::string a = argv[i], v = argv[i + 1];
-        if (a == "--duration-ms") durationMs = std::stod(v);
-        else if (a == "--scenes") scenes = v;
-        else if (a == "--shared") shared = v;
-        else if (a == "--markdown") markdown = v;
-        else if (a == "--soak-events") soakEvents = (int64)std::stod(v);
-        else if (a == "--threads") threadList = v;
-        else
-        {
-            std::cerr << "usage: event_stereo_table [--duration-ms MS] [--scenes a,b,...] [--shared DIR] [--markdown FILE] "
-                         "[--soak-events N] [--threads 1,2]\n";
-            return 2;
-        }
+        SampleCommandLine cmd(argc, argv, keys,
+                              "The paper's Table I and the matcher's speed, latency, memory and row-band scaling.");
+        if (cmd.helpShown())
+            return 0;
+        durationMs = cmd.get<double>("duration-ms");
+        scenes = cmd.get<std::string>("scenes");
+        shared = cmd.get<std::string>("shared");
+        markdown = cmd.get<std::string>("markdown");
+        soakEvents = (int64)cmd.get<double>("soak-events");
+        threadList = cmd.get<std::string>("threads");
+    }
+    catch (const std::exception& e)
+    {
+        std::cerr << "event_stereo_table: " << e.what() << "\n";
+        return 2;
     }
     try
     {

@@ -1,14 +1,14 @@
 // event_evaluate: runs a stereo method on a recording with per-event ground truth and writes a report.
 //
-//   event_evaluate [--scene NAME --duration-ms MS | --input REC [--gt REC.gt.csv]] [--method sgbm]
-//                  [--window-ms 33] [--output DIR] [--set PARAM=VALUE ...]
+//   event_evaluate [--scene=NAME --duration-ms=MS | --input=REC [--gt=REC.gt.csv]] [--method=sgbm]
+//                  [--window-ms=33] [--output=DIR] [--set=PARAM=VALUE[,PARAM=VALUE...]]
 //   methods: coupled, decoupled, fixed, sgbm (StereoEventMatcher modes), lifetime
 //
 // Ground truth comes from the simulator (a named scene, simulated in memory) or from the side file that
 // writeSimulatedRecording() writes (`t,x,y,p,camera,depth,disparity,flow_x,flow_y,lifetime,flags`).
 // Methods: the StereoEventMatcher modes (`sgbm` = what users do today, dv-processing's semi-dense matcher:
 // edge frames per window + cv::StereoSGBM), with --set for matcher parameters (FileStorage names, e.g.
-// uniquenessRatio=20); `lifetime` = LifetimeEstimator per camera (lifetime and noise metrics, no disparity).
+// --set=uniquenessRatio=20,costWindow=7); `lifetime` = LifetimeEstimator per camera (lifetime and noise metrics, no disparity).
 //
 // Writes DIR/report.md and DIR/metrics.csv (disparity density, share within 1 px, mean absolute disparity
 // error, relative depth error, lifetime median relative error, noise precision / recall, events with a
@@ -20,12 +20,15 @@
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
+#include "sample_command_line.hpp"
+
 #include <array>
 #include <chrono>
 #include <memory>
 #include <cstdio>
 #include <fstream>
 #include <iostream>
+#include <sstream>
 
 using namespace cv;
 using namespace cv::event;
@@ -34,9 +37,10 @@ namespace {
 
 struct Options
 {
-    std::string scene = "two_planes", input, gt, method = "sgbm", output = "evaluation";
-    std::string settings;  // matcher parameters, "key: value" lines (from --set key=value)
-    double durationMs = 500, windowMs = 33;
+    // Defaults: the keys below.
+    std::string scene, input, gt, method, output;
+    std::string settings;  // matcher parameters, "key: value" lines (from --set=key=value,...)
+    double durationMs = 0, windowMs = 0;
 };
 
 // Ground truth for the events, from the simulator or from a .gt.csv side file read in step.
@@ -171,6 +175,35 @@ void drawHistogram(const std::vector<int>& h, const std::string& path, const std
     imwrite(path, img);
 }
 
+const char* const keys =
+    "{help h      | false      | print this message}"
+    "{scene       | two_planes | simulated scene, when no --input is given}"
+    "{duration-ms | 500        | length of the simulated scene [ms]}"
+    "{input       |            | a recording with per-event ground truth beside it}"
+    "{gt          |            | the ground truth file; default: the recording's name + .gt.csv}"
+    "{method      | sgbm       | coupled, decoupled, fixed, sgbm (StereoEventMatcher modes) or lifetime}"
+    "{window-ms   | 33         | evaluation window (and SGBM frame) [ms]}"
+    "{output      | evaluation | output folder}"
+    "{set         |            | matcher parameters NAME=VALUE, comma separated (FileStorage names, e.g. uniquenessRatio=20)}";
+
+// "a=1,b=2" -> the FileStorage lines "a: 1\nb: 2\n".
+std::string parameterSettings(const std::string& list)
+{
+    std::string settings;
+    std::stringstream items(list);
+    std::string kv;
+    while (std::getline(items, kv, ','))
+    {
+        if (kv.empty())
+            continue;
+        const size_t eq = kv.find('=');
+        if (eq == std::string::npos || eq == 0)
+            throw std::runtime_error("--set: \"" + kv + "\" is not NAME=VALUE (a StereoEventMatcher parameter)");
+        settings += kv.substr(0, eq) + ": " + kv.substr(eq + 1) + "\n";
+    }
+    return settings;
+}
+
 }  // namespace
 
 int main(int argc, char** argv)
@@ -178,39 +211,20 @@ int main(int argc, char** argv)
     Options o;
     try
     {
-        for (int i = 1; i < argc; i++)
-        {
-            const std::string a = argv[i];
-            auto value = [&]() -> std::string {
-                if (i + 1 >= argc)
-                    throw std::runtime_error("missing value after " + a);
-                return argv[++i];
-            };
-            if (a == "--scene") o.scene = value();
-            else if (a == "--duration-ms") o.durationMs = std::stod(value());
-            else if (a == "--input") o.input = value();
-            else if (a == "--gt") o.gt = value();
-            else if (a == "--method") o.method = value();
-            else if (a == "--window-ms") o.windowMs = std::stod(value());
-            else if (a == "--output") o.output = value();
-            else if (a == "--set")
-            {
-                std::string kv = value();
-                const size_t eq = kv.find('=');
-                if (eq == std::string::npos)
-                    throw std::runtime_error("--set " + kv + ": expected NAME=VALUE (a StereoEventMatcher parameter)");
-                o.settings += kv.substr(0, eq) + ": " + kv.substr(eq + 1) + "\n";
-            }
-            else
-            {
-                std::cerr << "usage: event_evaluate [--scene NAME --duration-ms MS | --input REC [--gt REC.gt.csv]]\n"
-                             "       [--method coupled|decoupled|fixed|sgbm|lifetime] [--window-ms MS] [--output DIR]\n"
-                             "       [--set PARAM=VALUE ...]   (StereoEventMatcher parameters, e.g. uniquenessRatio=20)\n";
-                return a == "-h" || a == "--help" ? 0 : 2;
-            }
-        }
+        SampleCommandLine cmd(argc, argv, keys,
+                              "Runs a stereo method on a recording with per-event ground truth and writes a report.");
+        if (cmd.helpShown())
+            return 0;
+        o.scene = cmd.get<std::string>("scene");
+        o.durationMs = cmd.get<double>("duration-ms");
+        o.input = cmd.get<std::string>("input");
+        o.gt = cmd.get<std::string>("gt");
+        o.method = cmd.get<std::string>("method");
+        o.windowMs = cmd.get<double>("window-ms");
+        o.output = cmd.get<std::string>("output");
+        o.settings = parameterSettings(cmd.get<std::string>("set"));
         if (o.method != "lifetime" && findStereoMode(o.method) < 0)
-            throw std::runtime_error("--method " + o.method + ": available methods: coupled, decoupled, fixed, sgbm, lifetime");
+            throw std::runtime_error("--method=" + o.method + ": available methods: coupled, decoupled, fixed, sgbm, lifetime");
         if (!utils::fs::createDirectories(o.output))
             throw std::runtime_error(o.output + ": cannot create the output folder");
 

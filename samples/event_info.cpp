@@ -1,6 +1,6 @@
 // event_info: what is in an event recording (like ffprobe for videos).
 //
-//   event_info [--json] [--sensor WxH|NAME] [--one-based] [--left-camera-value 0|1] FILE...
+//   event_info [--json] [--sensor=WxH|NAME] [--one-based] [--left-camera-value=0|1] FILE...
 //   event_info --devices      (the event cameras connected: what EventCapture::open("davis:...") takes)
 //
 // Per file: detected format, sensor size, event count (ON / OFF, and left / right for stereo files), first
@@ -8,6 +8,8 @@
 // time, or could not place in time. Exit status 1 when any file could not be read (the error names it).
 
 #include <opencv2/event.hpp>
+
+#include "sample_command_line.hpp"
 
 #include <cstdio>
 #include <iostream>
@@ -142,47 +144,47 @@ int listDevices()
 
 }  // namespace
 
+const char* const keys =
+    "{help h            | false | print this message}"
+    "{@files            |       | one or more recordings}"
+    "{json              | false | print JSON instead of text}"
+    "{devices           | false | list the event cameras connected (what EventCapture::open(\"davis:N\") takes)}"
+    "{sensor            |       | sensor size WxH or a name (DVS128, DAVIS240, DAVIS346) when the format has none}"
+    "{one-based         | false | text recordings count pixels from 1}"
+    "{left-camera-value | 0     | the camera column's value that means left, in text recordings}";
+
 int main(int argc, char** argv)
 {
     bool json = false, oneBased = false;
     int leftValue = 0;
     Size sensor;
     std::vector<std::string> files;
-    for (int k = 1; k < argc; k++)
+    try
     {
-        const std::string a = argv[k];
-        if (a == "--devices")
+        SampleCommandLine cmd(argc, argv, keys,
+                              "What is in an event recording: format, sensor, events, time span, rejected events.",
+                              true);
+        if (cmd.helpShown())
+            return 0;
+        if (cmd.has("devices"))
             return listDevices();
-        if (a == "--json")
-            json = true;
-        else if (a == "--one-based")
-            oneBased = true;
-        else if (a == "--left-camera-value" && k + 1 < argc)
-            leftValue = std::atoi(argv[++k]);
-        else if (a == "--sensor" && k + 1 < argc)
-        {
-            try
-            {
-                sensor = parseSensorSize(argv[++k]);
-            }
-            catch (const cv::Exception& e)
-            {
-                std::cerr << "event_info: --sensor: " << e.err << "\n";
-                return 2;
-            }
-        }
-        else if (a == "-h" || a == "--help" || (!a.empty() && a[0] == '-'))
-        {
-            std::cerr << "usage: event_info [--json] [--sensor WxH|NAME] [--one-based] [--left-camera-value 0|1] FILE...\n"
-                         "       event_info --devices\n";
-            return a == "-h" || a == "--help" ? 0 : 2;
-        }
-        else
-            files.push_back(a);
+        json = cmd.has("json");
+        oneBased = cmd.has("one-based");
+        leftValue = cmd.get<int>("left-camera-value");
+        if (cmd.has("sensor"))
+            sensor = parseSensorSize(cmd.get<std::string>("sensor"));
+        files = cmd.positionals();
+        if (files.empty())
+            throw std::runtime_error("no recording given: event_info [options] FILE... (--help lists the options)");
     }
-    if (files.empty())
+    catch (const cv::Exception& e)
     {
-        std::cerr << "usage: event_info [--json] [--sensor WxH|NAME] [--one-based] [--left-camera-value 0|1] FILE...\n";
+        std::cerr << "event_info: " << e.err << "\n";
+        return 2;
+    }
+    catch (const std::exception& e)
+    {
+        std::cerr << "event_info: " << e.what() << "\n";
         return 2;
     }
     bool failed = false;

@@ -1,8 +1,8 @@
 // event_lifetime: per-event lifetime and normal flow of any recording (LifetimeEstimator), with pictures of the
 // active events next to the fixed-interval accumulation people use today.
 //
-//   event_lifetime [FILE | --scene NAME] [--camera 0|1] [--frame-ms 10] [--every-ms 50] [--csv FILE]
-//                  [--output DIR] [--sensor WxH|NAME] [--no-prediction] [--max-ms T]
+//   event_lifetime [FILE | --scene=NAME] [--camera=0|1] [--frame-ms=10] [--every-ms=50] [--csv=FILE]
+//                  [--output=DIR] [--sensor=WxH|NAME] [--no-prediction] [--max-ms=T]
 //
 // Pictures DIR/active_NNNNN.png: left, the events alive at that instant (each lives from its timestamp for
 // its lifetime: the sharp edge image); right, all events of the last --frame-ms (the fixed window).
@@ -14,6 +14,7 @@
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
+#include "sample_command_line.hpp"
 #include "sample_progress.hpp"
 
 #include <cstdio>
@@ -23,41 +24,41 @@
 using namespace cv;
 using namespace cv::event;
 
+namespace {
+
+const char* const keys =
+    "{help h        | false           | print this message}"
+    "{@input        |                 | the recording; none: simulate 1 s of --scene}"
+    "{scene         | moving_line     | simulated scene when no recording is given}"
+    "{camera        | 0               | which camera of a stereo recording: 0 left, 1 right}"
+    "{frame-ms      | 10              | the fixed window drawn beside the lifetimes [ms]}"
+    "{every-ms      | 50              | one picture per this much recording time [ms]}"
+    "{max-ms        | -1              | stop after this much recording time [ms]; -1: all}"
+    "{csv           |                 | write every event with its lifetime and flow to this file}"
+    "{output        | lifetime_output | output folder}"
+    "{sensor        |                 | sensor size WxH or a name (DVS128, DAVIS240, DAVIS346) when the format has none}"
+    "{no-prediction | false           | fit a plane for every event (no prediction shortcut)}";
+
+}  // namespace
+
 int main(int argc, char** argv)
 {
-    std::string input, scene = "moving_line", csvPath, output = "lifetime_output";
-    int camera = CAMERA_LEFT;
-    double frameMs = 10, everyMs = 50, maxMs = -1;
-    bool prediction = true;
-    Size sensor;
     try
     {
-        for (int i = 1; i < argc; i++)
-        {
-            const std::string a = argv[i];
-            auto value = [&]() -> std::string {
-                if (i + 1 >= argc)
-                    throw std::runtime_error("missing value after " + a);
-                return argv[++i];
-            };
-            if (a == "--scene") scene = value();
-            else if (a == "--camera") camera = std::stoi(value());
-            else if (a == "--frame-ms") frameMs = std::stod(value());
-            else if (a == "--every-ms") everyMs = std::stod(value());
-            else if (a == "--max-ms") maxMs = std::stod(value());
-            else if (a == "--csv") csvPath = value();
-            else if (a == "--output") output = value();
-            else if (a == "--sensor") sensor = parseSensorSize(value());
-            else if (a == "--no-prediction") prediction = false;
-            else if (a == "-h" || a == "--help" || (!a.empty() && a[0] == '-'))
-            {
-                std::cerr << "usage: event_lifetime [FILE | --scene NAME] [--camera 0|1] [--frame-ms MS] [--every-ms MS]\n"
-                             "       [--csv FILE] [--output DIR] [--sensor WxH|NAME] [--no-prediction] [--max-ms T]\n";
-                return a == "-h" || a == "--help" ? 0 : 2;
-            }
-            else
-                input = a;
-        }
+        SampleCommandLine cmd(argc, argv, keys,
+                              "Per-event lifetime and normal flow of a recording, with pictures of the active events.");
+        if (cmd.helpShown())
+            return 0;
+        std::string input = cmd.get<std::string>("@input");
+        const std::string scene = cmd.get<std::string>("scene"), csvPath = cmd.get<std::string>("csv"),
+                          output = cmd.get<std::string>("output");
+        const int camera = cmd.get<int>("camera");
+        const double frameMs = cmd.get<double>("frame-ms"), everyMs = cmd.get<double>("every-ms"),
+                     maxMs = cmd.get<double>("max-ms");
+        const bool prediction = !cmd.has("no-prediction");
+        Size sensor;
+        if (cmd.has("sensor"))
+            sensor = parseSensorSize(cmd.get<std::string>("sensor"));
         if (!utils::fs::createDirectories(output))
             throw std::runtime_error(output + ": cannot create the output folder");
         if (input.empty())
@@ -73,7 +74,7 @@ int main(int argc, char** argv)
         cap.open(input);
         const Size size = cap.getSensorSize();
         if (size.empty())
-            throw std::runtime_error(input + ": the format does not give the sensor size; pass --sensor WxH");
+            throw std::runtime_error(input + ": the format does not give the sensor size; pass --sensor=WxH");
         Ptr<LifetimeEstimator> est = LifetimeEstimator::create(size);
         est->setUsePrediction(prediction);
         std::FILE* csv = nullptr;

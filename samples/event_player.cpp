@@ -1,7 +1,7 @@
 // event_player: plays any supported recording as video, as time surfaces or as event-count frames.
 //
-//   event_player FILE [--mode surface|frames] [--window-ms 33] [--tau-ms 30] [--output DIR] [--video FILE.avi]
-//                     [--show] [--start-ms T] [--max-frames N] [--sensor WxH|NAME] [--one-based]
+//   event_player FILE [--mode=surface|frames] [--window-ms=33] [--tau-ms=30] [--output=DIR] [--video=FILE.avi]
+//                     [--show] [--start-ms=T] [--max-frames=N] [--sensor=WxH|NAME] [--one-based]
 //
 // Frames go to DIR/frame_NNNNN.png (default), to an MJPG video with --video, and/or to a window with --show.
 // Stereo recordings are shown left | right. A progress bar runs on stderr.
@@ -13,6 +13,7 @@
 #include <opencv2/imgproc.hpp>
 #include <opencv2/videoio.hpp>
 
+#include "sample_command_line.hpp"
 #include "sample_progress.hpp"
 
 #include <cstdio>
@@ -25,8 +26,8 @@ namespace {
 
 struct Options
 {
-    std::string input, output = "player_output", video, mode = "surface";
-    double windowMs = 33, tauMs = 30, startMs = -1;
+    std::string input, output, video, mode;
+    double windowMs = 0, tauMs = 0, startMs = -1;
     int maxFrames = -1;
     bool show = false, oneBased = false;
     Size sensor;
@@ -54,35 +55,40 @@ Mat render(const EventSurface& s, int64 t, const Options& o)
     return bgr;
 }
 
+const char* const keys =
+    "{help h     | false         | print this message}"
+    "{@input     |               | the recording}"
+    "{mode       | surface       | surface (time surfaces) or frames (event counts)}"
+    "{window-ms  | 33            | time per frame [ms]}"
+    "{tau-ms     | 30            | decay of the time surface [ms]}"
+    "{start-ms   | -1            | first frame at this time of the recording [ms]; -1: from the start}"
+    "{max-frames | -1            | stop after this many frames; -1: all}"
+    "{output     | player_output | folder for frame_NNNNN.png (not written when --video or --show is given)}"
+    "{video      |               | write an MJPG video instead of PNG files}"
+    "{show       | false         | show the frames in a window}"
+    "{sensor     |               | sensor size WxH or a name (DVS128, DAVIS240, DAVIS346) when the format has none}"
+    "{one-based  | false         | text recordings count pixels from 1}";
+
 bool parse(int argc, char** argv, Options& o)
 {
-    for (int i = 1; i < argc; i++)
-    {
-        const std::string a = argv[i];
-        auto value = [&]() -> std::string {
-            if (i + 1 >= argc)
-                throw std::runtime_error("missing value after " + a);
-            return argv[++i];
-        };
-        if (a == "--mode") o.mode = value();
-        else if (a == "--window-ms") o.windowMs = std::stod(value());
-        else if (a == "--tau-ms") o.tauMs = std::stod(value());
-        else if (a == "--start-ms") o.startMs = std::stod(value());
-        else if (a == "--output") o.output = value();
-        else if (a == "--video") o.video = value();
-        else if (a == "--max-frames") o.maxFrames = std::stoi(value());
-        else if (a == "--show") o.show = true;
-        else if (a == "--one-based") o.oneBased = true;
-        else if (a == "--sensor") o.sensor = parseSensorSize(value());
-        else if (a == "-h" || a == "--help")
-            return false;
-        else if (!a.empty() && a[0] == '-')
-            throw std::runtime_error("unknown option " + a);
-        else
-            o.input = a;
-    }
-    if (o.input.empty())
+    SampleCommandLine cmd(argc, argv, keys,
+                          "Plays an event recording as time surfaces or event-count frames.");
+    if (cmd.helpShown())
         return false;
+    o.input = cmd.get<std::string>("@input");
+    o.mode = cmd.get<std::string>("mode");
+    o.windowMs = cmd.get<double>("window-ms");
+    o.tauMs = cmd.get<double>("tau-ms");
+    o.startMs = cmd.get<double>("start-ms");
+    o.maxFrames = cmd.get<int>("max-frames");
+    o.output = cmd.get<std::string>("output");
+    o.video = cmd.get<std::string>("video");
+    o.show = cmd.has("show");
+    if (cmd.has("sensor"))
+        o.sensor = parseSensorSize(cmd.get<std::string>("sensor"));
+    o.oneBased = cmd.has("one-based");
+    if (o.input.empty())
+        throw std::runtime_error("no recording given: event_player FILE [options] (--help lists them)");
     if (o.mode != "surface" && o.mode != "frames")
         throw std::runtime_error("--mode is surface or frames");
     return true;
@@ -96,11 +102,7 @@ int main(int argc, char** argv)
     try
     {
         if (!parse(argc, argv, o))
-        {
-            std::cerr << "usage: event_player FILE [--mode surface|frames] [--window-ms MS] [--tau-ms MS] [--output DIR]\n"
-                         "       [--video FILE.avi] [--show] [--start-ms T] [--max-frames N] [--sensor WxH|NAME] [--one-based]\n";
-            return argc > 1 ? 2 : 0;
-        }
+            return 0;
         EventCapture cap;
         cap.set(EVENT_CAP_PROP_SENSOR_WIDTH, o.sensor.width);
         cap.set(EVENT_CAP_PROP_SENSOR_HEIGHT, o.sensor.height);
@@ -109,13 +111,12 @@ int main(int argc, char** argv)
         cap.open(o.input);
         const Size size = cap.getSensorSize();
         if (size.empty())
-            throw std::runtime_error(o.input + ": the format does not give the sensor size; pass --sensor WxH");
+            throw std::runtime_error(o.input + ": the format does not give the sensor size; pass --sensor=WxH");
         if (o.startMs >= 0)
             cap.set(EVENT_CAP_PROP_POS_US, cap.get(EVENT_CAP_PROP_FIRST_TIMESTAMP_US) + o.startMs * 1000);
         const bool stereo = cap.get(EVENT_CAP_PROP_STEREO) != 0;
         const bool writePngs = o.video.empty() && !o.show;
-        if (writePngs)
-            if (!utils::fs::createDirectories(o.output))
+        if (writePngs && !utils::fs::createDirectories(o.output))
             throw std::runtime_error(o.output + ": cannot create the output folder");
 
         Ptr<EventSurface> surface[2] = { EventSurface::create(size), EventSurface::create(size) };

@@ -1,10 +1,10 @@
 // event_stereo: per-event stereo disparity, depth and lifetime (StereoEventMatcher) on a stereo recording, a
 // live stereo DAVIS pair, or the simulator's built-in scene; the main job of this project.
 //
-//   event_stereo [--input FILE | --left FILE --right FILE | --live] [--calib FILE] [--sensor WxH]
-//                [--left-camera-value 0|1] [--mode coupled|decoupled|fixed|sgbm]
-//                [--min-disparity PX] [--max-disparity PX] [--frame-ms MS] [--threads N] [--no-csv]
-//                [--all-frames] [--output DIR] [--scene NAME --duration-ms MS]   (no input: simulate, with ground truth)
+//   event_stereo [--input=FILE | --left=FILE --right=FILE | --live] [--calib=FILE] [--sensor=WxH]
+//                [--left-camera-value=0|1] [--mode=coupled|decoupled|fixed|sgbm]
+//                [--min-disparity=PX] [--max-disparity=PX] [--frame-ms=MS] [--threads=N] [--no-csv]
+//                [--all-frames] [--output=DIR] [--scene=NAME --duration-ms=MS]   (no input: simulate, with ground truth)
 //
 // Writes into DIR: events.csv (t,x,y,p,camera,disparity,depth,lifetime,flags per event, x/y rectified),
 // disparity.avi with one frame per --frame-ms window when a video writer is available (left | right active
@@ -21,6 +21,7 @@
 #include <opencv2/imgproc.hpp>
 #include <opencv2/videoio.hpp>
 
+#include "sample_command_line.hpp"
 #include "sample_progress.hpp"
 
 #include <algorithm>
@@ -37,56 +38,65 @@ namespace {
 
 struct Options
 {
-    std::string input, left, right, calib, output = "output/event_stereo", scene = "two_planes", mode = "coupled";
+    // Defaults: the keys below.
+    std::string input, left, right, calib, output, scene, mode;
     bool live = false, csv = true, allFrames = false;
     Size sensor;
-    int leftCameraValue = 0, minDisparity = 0, maxDisparity = 40;
+    int leftCameraValue = 0, minDisparity = 0, maxDisparity = 0;
     // Row bands on their own threads (StereoEventMatcher::setNumThreads): the same results as one thread.
     int threads = std::min(4, std::max(1, getNumberOfCPUs()));
-    double frameMs = 33, durationMs = 1000;
+    double frameMs = 0, durationMs = 0;
 };
 
-void usage()
-{
-    std::cerr << "usage: event_stereo [--input FILE | --left FILE --right FILE | --live] [--calib FILE]\n"
-                 "       [--sensor WxH] [--left-camera-value 0|1] [--mode coupled|decoupled|fixed|sgbm]\n"
-                 "       [--min-disparity PX] [--max-disparity PX] [--frame-ms MS] [--threads N (default: CPUs, at most 4)]\n"
-                 "       [--no-csv] [--all-frames] [--output DIR]\n"
-                 "       [--scene plane|two_planes|moving_line|faint_line|cluttered] [--duration-ms MS]  (no input)\n";
-}
+const char* const keys =
+    "{help h            | false      | print this message}"
+    "{input             |            | a recording (one file; stereo when it holds both cameras)}"
+    "{left              |            | the left camera's recording (with --right)}"
+    "{right             |            | the right camera's recording (with --left)}"
+    "{live              | false      | a live stereo DAVIS pair (davis:0 left, davis:1 right)}"
+    "{calib             |            | stereo calibration (FileStorage: K1 D1 K2 D2 R T, image size)}"
+    "{sensor            |            | sensor size WxH or a name (DVS128, DAVIS240, DAVIS346) when the format has none}"
+    "{left-camera-value | 0          | the camera column's value that means left, in text recordings}"
+    "{mode              | coupled    | coupled, decoupled, fixed or sgbm}"
+    "{min-disparity     | 0          | smallest disparity searched [px]}"
+    "{max-disparity     | 40         | largest disparity searched [px]}"
+    "{frame-ms          | 33         | window of one video frame [ms]}"
+    "{threads           | 0          | row bands on their own threads; 0: the CPUs, at most 4}"
+    "{no-csv            | false      | do not write events.csv}"
+    "{all-frames        | false      | a PNG for every window, not a handful}"
+    "{output            | output/event_stereo | output folder}"
+    "{scene             | two_planes | simulated scene when no input is given: plane, two_planes, moving_line, faint_line, cluttered}"
+    "{duration-ms       | 1000       | length of the simulated scene [ms]}";
 
 bool parse(int argc, char** argv, Options& o)
 {
-    for (int i = 1; i < argc; i++)
-    {
-        const std::string a = argv[i];
-        auto value = [&]() -> std::string {
-            if (i + 1 >= argc)
-                throw std::runtime_error("missing value after " + a);
-            return argv[++i];
-        };
-        if (a == "--input") o.input = value();
-        else if (a == "--left") o.left = value();
-        else if (a == "--right") o.right = value();
-        else if (a == "--live") o.live = true;
-        else if (a == "--calib") o.calib = value();
-        else if (a == "--sensor") o.sensor = parseSensorSize(value());
-        else if (a == "--left-camera-value") o.leftCameraValue = std::stoi(value());
-        else if (a == "--mode") o.mode = value();
-        else if (a == "--min-disparity") o.minDisparity = std::stoi(value());
-        else if (a == "--max-disparity") o.maxDisparity = std::stoi(value());
-        else if (a == "--frame-ms") o.frameMs = std::stod(value());
-        else if (a == "--threads") o.threads = std::stoi(value());
-        else if (a == "--no-csv") o.csv = false;
-        else if (a == "--output") o.output = value();
-        else if (a == "--all-frames") o.allFrames = true;
-        else if (a == "--scene") o.scene = value();
-        else if (a == "--duration-ms") o.durationMs = std::stod(value());
-        else if (a == "-h" || a == "--help") { usage(); return false; }
-        else throw std::runtime_error("unknown option " + a + " (--help lists them)");
-    }
+    SampleCommandLine cmd(argc, argv, keys,
+                          "Per-event stereo disparity, depth and lifetime of a stereo recording, a live DAVIS pair "
+                          "or a simulated scene.");
+    if (cmd.helpShown())
+        return false;
+    o.input = cmd.get<std::string>("input");
+    o.left = cmd.get<std::string>("left");
+    o.right = cmd.get<std::string>("right");
+    o.live = cmd.has("live");
+    o.calib = cmd.get<std::string>("calib");
+    if (cmd.has("sensor"))
+        o.sensor = parseSensorSize(cmd.get<std::string>("sensor"));
+    o.leftCameraValue = cmd.get<int>("left-camera-value");
+    o.mode = cmd.get<std::string>("mode");
+    o.minDisparity = cmd.get<int>("min-disparity");
+    o.maxDisparity = cmd.get<int>("max-disparity");
+    o.frameMs = cmd.get<double>("frame-ms");
+    const int threads = cmd.get<int>("threads");
+    if (threads > 0)
+        o.threads = threads;
+    o.csv = !cmd.has("no-csv");
+    o.allFrames = cmd.has("all-frames");
+    o.output = cmd.get<std::string>("output");
+    o.scene = cmd.get<std::string>("scene");
+    o.durationMs = cmd.get<double>("duration-ms");
     if (findStereoMode(o.mode) < 0)
-        throw std::runtime_error("--mode " + o.mode + ": use coupled, decoupled, fixed or sgbm");
+        throw std::runtime_error("--mode=" + o.mode + ": use coupled, decoupled, fixed or sgbm");
     if ((o.left.empty()) != (o.right.empty()))
         throw std::runtime_error("--left and --right go together");
     if (!(o.frameMs > 0))
@@ -218,7 +228,7 @@ int main(int argc, char** argv)
         Source source(opt);
         const Size size = source.sensorSize();
         if (size.empty())
-            throw std::runtime_error(source.name() + ": the format does not give the sensor size; pass --sensor WxH");
+            throw std::runtime_error(source.name() + ": the format does not give the sensor size; pass --sensor=WxH");
 
         Ptr<StereoEventMatcher> matcher = StereoEventMatcher::create(size, findStereoMode(opt.mode));
         matcher->setMinDisparity(opt.minDisparity);
@@ -337,7 +347,7 @@ int main(int argc, char** argv)
         const int64 outside = (int64)source.rejectedOutside(), backwards = (int64)source.timeBackwards();
         if (outside > 0)
             std::cerr << "event_stereo: warning: " << outside << " input events lie outside the " << size.width
-                      << " x " << size.height << " sensor and were not processed (--sensor WxH sets the size)\n";
+                      << " x " << size.height << " sensor and were not processed (--sensor=WxH sets the size)\n";
         auto pct = [](int64 a, int64 b) { return b ? 100.0 * (double)a / (double)b : 0.0; };
         std::ostringstream text;
         text << "# event_stereo summary\n\n| | |\n|---|---|\n"

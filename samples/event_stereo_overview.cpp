@@ -2,8 +2,8 @@
 // event-count frames every few windows, and writes a summary (events per camera, rates, and the dominant
 // disparity found by correlating the two cameras' accumulated event frames along the rows).
 //
-//   event_stereo_overview [--input FILE | --left FILE --right FILE] [--sensor 128x128]
-//                         [--left-camera-value 1] [--window-ms 33] [--max-disparity 40] [--output DIR]
+//   event_stereo_overview [--input=FILE | --left=FILE --right=FILE] [--sensor=128x128]
+//                         [--left-camera-value=1] [--window-ms=33] [--max-disparity=40] [--output=DIR]
 //
 // Without input it simulates the built-in default recording (StereoEventSimulator scene --scene, default
 // "two_planes": a textured plane sliding over a textured background, disparities 20 and 10 px), writes it
@@ -14,6 +14,7 @@
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
+#include "sample_command_line.hpp"
 #include "sample_progress.hpp"
 
 #include <cstdio>
@@ -28,44 +29,44 @@ namespace {
 
 struct Options
 {
-    std::string input, left, right, output = "output", scene = "two_planes";
-    double simulateMs = 1000;
+    std::string input, left, right, output, scene;
+    double simulateMs = 0, windowMs = 0;
     Size sensor;
-    int leftCameraValue = 0;
-    double windowMs = 33;
-    int maxDisparity = 40;
+    int leftCameraValue = 0, maxDisparity = 0;
 };
 
-void usage()
-{
-    std::cerr << "usage: event_stereo_overview [--input FILE | --left FILE --right FILE] [--sensor WxH]\n"
-                 "       [--left-camera-value 0|1] [--window-ms MS] [--max-disparity PX] [--output DIR]\n"
-                 "       [--scene plane|two_planes|moving_line|cluttered] [--simulate-ms MS]   (without input)\n";
-}
+const char* const keys =
+    "{help h            | false      | print this message}"
+    "{input             |            | a stereo recording (one file holding both cameras)}"
+    "{left              |            | the left camera's recording (with --right)}"
+    "{right             |            | the right camera's recording (with --left)}"
+    "{sensor            |            | sensor size WxH or a name (DVS128, DAVIS240, DAVIS346) when the format has none}"
+    "{left-camera-value | 0          | the camera column's value that means left, in text recordings}"
+    "{window-ms         | 33         | window of one picture [ms]}"
+    "{max-disparity     | 40         | largest disparity searched by the frame correlation [px]}"
+    "{output            | output     | output folder}"
+    "{scene             | two_planes | simulated scene when no input is given: plane, two_planes, moving_line, cluttered}"
+    "{simulate-ms       | 1000       | length of the simulated scene [ms]}";
 
 bool parse(int argc, char** argv, Options& o)
 {
-    for (int i = 1; i < argc; i++)
-    {
-        const std::string a = argv[i];
-        auto value = [&]() -> std::string {
-            if (i + 1 >= argc)
-                throw std::runtime_error("missing value after " + a);
-            return argv[++i];
-        };
-        if (a == "--input") o.input = value();
-        else if (a == "--left") o.left = value();
-        else if (a == "--right") o.right = value();
-        else if (a == "--output") o.output = value();
-        else if (a == "--scene") o.scene = value();
-        else if (a == "--simulate-ms") o.simulateMs = std::stod(value());
-        else if (a == "--left-camera-value") o.leftCameraValue = std::stoi(value());
-        else if (a == "--window-ms") o.windowMs = std::stod(value());
-        else if (a == "--max-disparity") o.maxDisparity = std::stoi(value());
-        else if (a == "--sensor") o.sensor = parseSensorSize(value());
-        else if (a == "-h" || a == "--help") { usage(); return false; }
-        else throw std::runtime_error("unknown option " + a);
-    }
+    SampleCommandLine cmd(argc, argv, keys,
+                          "Overview of a stereo recording: time surfaces, event counts and the dominant disparity.");
+    if (cmd.helpShown())
+        return false;
+    o.input = cmd.get<std::string>("input");
+    o.left = cmd.get<std::string>("left");
+    o.right = cmd.get<std::string>("right");
+    if (cmd.has("sensor"))
+        o.sensor = parseSensorSize(cmd.get<std::string>("sensor"));
+    o.leftCameraValue = cmd.get<int>("left-camera-value");
+    o.windowMs = cmd.get<double>("window-ms");
+    o.maxDisparity = cmd.get<int>("max-disparity");
+    o.output = cmd.get<std::string>("output");
+    o.scene = cmd.get<std::string>("scene");
+    o.simulateMs = cmd.get<double>("simulate-ms");
+    if ((o.left.empty()) != (o.right.empty()))
+        throw std::runtime_error("--left and --right go together");
     return true;
 }
 

@@ -12,10 +12,10 @@ bash "$repo/scripts/setup.sh"
 bash "$repo/scripts/build.sh" -DOPENCV_EVENT_BUILD_CONTRIB_TEST=OFF
 out="$repo/output"
 mkdir -p "$out"
-"$repo/build/samples/event_stereo" --scene two_planes --output "$out/simulated"
+"$repo/build/samples/event_stereo" --scene=two_planes --output="$out/simulated"
 fan="${OPENCV_EVENT_SHARED_DATA:-$repo/../shared/data}/stereo_dvs128_tum/Fan_disp8.dat"
 if [ -f "$fan" ]; then
   # TUM stereo DVS128: t_us x y p retina, retina 1 = left camera.
-  "$repo/build/samples/event_stereo" --input "$fan" --left-camera-value 1 --sensor DVS128 --output "$out/tum_fan"
+  "$repo/build/samples/event_stereo" --input="$fan" --left-camera-value=1 --sensor=DVS128 --output="$out/tum_fan"
 fi
 echo "== main.sh: events.csv, pictures and summary.md in $out/simulated${fan:+ and $out/tum_fan}"

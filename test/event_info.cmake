@@ -1,5 +1,5 @@
-# ctest `event_info_cli`: event_info on a fixture whose facts are known by construction, and on a missing
-# file (exit status 1, the error names the file).
+# ctest `event_info_cli`: event_info on a fixture whose facts are known by construction, on a missing file
+# (exit status 1, the error names the file) and on command-line mistakes (exit status 2).
 file(MAKE_DIRECTORY "${WORK_DIR}")
 set(fixture "${WORK_DIR}/three_events.txt")
 file(WRITE "${fixture}" "# fixture\n8 6\n0.001 1 2 1 0\n0.002 3 4 0 1\n0.005 7 5 1 1\n0.006 9 9 1 0\n")
@@ -21,3 +21,15 @@ execute_process(COMMAND "${EVENT_INFO}" "${WORK_DIR}/missing.aedat4" RESULT_VARI
 if(NOT rc EQUAL 1 OR NOT out MATCHES "missing.aedat4: cannot open")
   message(FATAL_ERROR "a missing file gave exit status ${rc} and: ${out}")
 endif()
+# Command-line mistakes are refused (exit status 2) with what to write instead, never run with a default:
+# the space-separated value of older releases, an unknown option, a switch given a value.
+foreach(case "--sensor;DVS128;${fixture}|--sensor needs a value: write --sensor=VALUE"
+             "--sensr=DVS128;${fixture}|unknown option --sensr=DVS128"
+             "--json=yes;${fixture}|--json is a switch")
+  string(REPLACE "|" ";" parts "${case}")
+  list(POP_BACK parts expected)
+  execute_process(COMMAND "${EVENT_INFO}" ${parts} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  if(NOT rc EQUAL 2 OR NOT err MATCHES "${expected}")
+    message(FATAL_ERROR "event_info ${parts}: exit status ${rc} and \"${err}\", expected 2 and \"${expected}\"")
+  endif()
+endforeach()

@@ -34,9 +34,9 @@ export LSAN_OPTIONS=suppressions="$here/lsan.supp"
 "$build/modules/event/opencv_test_event"
 echo "== sanitizers: samples on the simulator and on every real recording"
 work=$(mktemp -d)
-"$build/samples/event_stereo_overview" --scene cluttered --simulate-ms 150 --output "$work/overview" > /dev/null
-"$build/samples/event_evaluate" --scene two_planes --method lifetime --duration-ms 100 --output "$work/eval" > /dev/null
-"$build/samples/event_evaluate" --scene two_planes --method sgbm --duration-ms 100 --output "$work/eval2" > /dev/null
+"$build/samples/event_stereo_overview" --scene=cluttered --simulate-ms=150 --output="$work/overview" > /dev/null
+"$build/samples/event_evaluate" --scene=two_planes --method=lifetime --duration-ms=100 --output="$work/eval" > /dev/null
+"$build/samples/event_evaluate" --scene=two_planes --method=sgbm --duration-ms=100 --output="$work/eval2" > /dev/null
 shared="${OPENCV_EVENT_SHARED_DATA:-$repo/../shared/data}"
 if [ -d "$shared" ]; then
   "$build/samples/event_info" "$shared"/format_samples/* "$shared"/stereo_dvs128_tum/* > "$work/info.txt"
