@@ -48,9 +48,8 @@ UsbDeviceId resolveDavisCamera(UsbTransport& transport, const String& source, co
 {
     const std::vector<UsbDeviceId> cameras = findDavisCameras(transport);
     if (cameras.empty())
-        CV_Error_(Error::StsError, ("%s: no DAVIS camera is connected (USB %04x:%04x / %04x:%04x not found; see "
-                                    "doc/live_davis.md for permissions)", source.c_str(), kVendorId, kProductFx3,
-                                    kVendorId, kProductFx2));
+        CV_Error_(Error::StsError, ("%s: no DAVIS camera is connected (USB %04x:%04x / %04x:%04x not found)", source.c_str(),
+                                    kVendorId, kProductFx3, kVendorId, kProductFx2));
     // Serial numbers have 8 characters; a short all-digit selector is an index.
     const bool isIndex = !selector.empty() && selector.size() <= 3 &&
                          std::all_of(selector.begin(), selector.end(), [](char c) { return c >= '0' && c <= '9'; });

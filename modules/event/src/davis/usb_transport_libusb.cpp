@@ -25,6 +25,9 @@ namespace detail {
 namespace {
 
 const unsigned kControlTimeoutMs = 1000;
+// What a user without access to the camera's device node needs (iniVation's vendor id; every product).
+const char* const kUdevRuleHint =
+    "a udev rule such as SUBSYSTEM==\"usb\", ATTR{idVendor}==\"152a\", MODE=\"0666\" in /etc/udev/rules.d/, then re-plug";
 
 String usbError(int code)
 {
@@ -206,8 +209,8 @@ private:
         if (n >= 0)
             libusb_free_device_list(list, 1);
         if (rc == LIBUSB_ERROR_ACCESS)
-            CV_Error_(Error::StsError, ("%s: permission denied opening the camera: install the udev rule of "
-                                        "doc/live_davis.md (or run as root)", id_.location().c_str()));
+            CV_Error_(Error::StsError, ("%s: permission denied opening the camera: add %s "
+                                        "(or run as root)", id_.location().c_str(), kUdevRuleHint));
         if (rc != LIBUSB_SUCCESS)
             CV_Error_(Error::StsError, ("%s: cannot open the camera: %s", id_.location().c_str(), usbError(rc).c_str()));
         int configuration = 0;

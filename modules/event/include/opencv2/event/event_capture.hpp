@@ -62,7 +62,7 @@ enum EventCaptureProperties
     EVENT_CAP_PROP_TEXT_LEFT_CAMERA_VALUE = 107, //!< text, before open: value of the camera column that means the left camera (default 0; 1 for TUM's Fan recording)
     EVENT_CAP_PROP_DEVICE_BIAS_PRESET = 200,      //!< live: 0 = the vendor's default biases for the chip (set uploads them again)
     EVENT_CAP_PROP_DEVICE_BIAS_SELECT = 201,      //!< live: index of the bias EVENT_CAP_PROP_DEVICE_BIAS_VALUE reads / writes
-    EVENT_CAP_PROP_DEVICE_BIAS_VALUE = 202,       //!< live: raw 16-bit word of the selected bias (coarse/fine, VDAC or shifted-source encoding, see doc/live_davis.md)
+    EVENT_CAP_PROP_DEVICE_BIAS_VALUE = 202,       //!< live: raw 16-bit word of the selected bias, in the chip's encoding of that bias (coarse/fine current: bits 4..11 fine, 12..14 coarse; VDAC: bits 0..5 voltage, 6..8 current; shifted source)
     EVENT_CAP_PROP_DEVICE_BA_FILTER = 203,        //!< live: background-activity (noise) filter on the camera, 1 = on (default 1)
     EVENT_CAP_PROP_DEVICE_BA_FILTER_TIME_US = 204, //!< live: its support time [us], rounded to 250 us steps (default 2000)
     EVENT_CAP_PROP_DEVICE_ROI_X = 205,            //!< live: region of interest on the camera (events outside are not sent); left column

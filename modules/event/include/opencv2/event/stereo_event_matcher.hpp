@@ -85,11 +85,8 @@ event is flagged ambiguous and gets no disparity rather than a wrong one.
   several calls is computed from the events seen so far. processEvent() is not available in this mode.
 
 **Activity** (COUPLED, DECOUPLED): an event with a lifetime stays active for getActiveDistance() lifetimes
-(2.5 by default; the paper has 1), so each edge leaves a trail of 2.5 px in the descriptors. Measured on
-the simulator against 1 (density / within 1 px, 264 ms, uniqueness ratio 25 %): plane 98.7 / 99.96 ->
-99.0 / 99.97 %, two_planes 92.4 / 99.66 -> 93.9 / 99.72 %, cluttered 78.3 / 97.7 -> 80.6 / 97.8 %; over
-1 s cluttered 83.9 -> 85.8 % at 98.7 -> 98.6 %, two_planes level (94.7 -> 94.5 %); the weak sensor of
-`faint_line` keeps more lifetimes (1,486 -> 1,525). Set 1 for the paper's method as published.
+(2.5 by default; the paper has 1), so each edge leaves a trail of 2.5 px in the descriptors: more of each
+edge to match, and more lifetimes for a weak sensor's events. Set 1 for the paper's method as published.
 
 **Cold start** (COUPLED, DECOUPLED): for one time window of the plane fit after the first event (after
 create() or reset(), or after a gap in the stream longer than that window), the surface cannot yet hold the
@@ -165,8 +162,8 @@ public:
     /** @brief A, the side of the largest window the iterative aggregation grows to (odd, >= W, default 17). */
     CV_WRAP virtual int getAggregationWindow() const = 0;
     CV_WRAP virtual void setAggregationWindow(int a) = 0;
-    /** @brief Margin [%] by which the best cost must beat every other candidate and "no counterpart" (default 15;
-    higher trades density for precision: see doc/stereo.md for the sweep on the simulator and the TUM pairs). */
+    /** @brief Margin [%] by which the best cost must beat every other candidate and "no counterpart" (default 15).
+    A higher margin leaves more events STEREO_AMBIGUOUS (lower density) and fewer of the estimates wrong. */
     CV_WRAP virtual int getUniquenessRatio() const = 0;
     CV_WRAP virtual void setUniquenessRatio(int ratio) = 0;
     /** @brief FIXED_INTERVAL: how long every event stays active [us] (default 10000); in the other per-event
@@ -184,8 +181,7 @@ public:
     /** @brief COUPLED, DECOUPLED: how far [px] an event's edge moves while the event stays active for
     matching, i.e. for how many lifetimes (the lifetime is the time the edge takes to move one pixel), up to
     getMaxLifetime() (default 2.5; 0.1..100). The paper's "active within its lifetime" is 1. A trail of a
-    few pixels gives the descriptors more of each edge to match: see the class description for what 2.5
-    measured against 1. The lifetimes output are not scaled. */
+    few pixels gives the descriptors more of each edge to match. The lifetimes output are not scaled. */
     CV_WRAP virtual double getActiveDistance() const = 0;
     CV_WRAP virtual void setActiveDistance(double px) = 0;
     /** @brief Threads for process() in the per-event modes (default 1; 1..64): the sensor's rows are split
@@ -194,8 +190,9 @@ public:
     band has processed everything before it, so the results are identical to one thread's, bit for bit.
     Bands are at least 2 x (the rows an event reaches each way: half the aggregation window at the
     defaults) + 1 rows tall, which caps the threads on small sensors (10 on a DAVIS240 at the defaults);
-    packets of fewer than 1000 events run on one thread. See doc/performance.md for how and what it gains.
-    processEvent() always runs on the calling thread. Not stored by write(). */
+    packets of fewer than 1000 events run on one thread. More threads than the machine's cores is slower: a band
+    whose thread is not running holds its neighbours back. processEvent() always runs on the calling thread.
+    Not stored by write(). */
     CV_WRAP virtual int getNumThreads() const = 0;
     CV_WRAP virtual void setNumThreads(int threads) = 0;
 };
