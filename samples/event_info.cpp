@@ -1,11 +1,15 @@
 // event_info: what is in an event recording (like ffprobe for videos).
 //
-//   event_info [--json] [--sensor=WxH|NAME] [--one-based] [--left-camera-value=0|1] FILE...
+//   event_info [--json] [--stats] [--sensor=WxH|NAME] [--one-based] [--left-camera-value=0|1] FILE...
+//   event_info --stats --scene=NAME[,NAME...] [--duration-ms=MS]   (the simulator's scenes)
 //   event_info --devices      (the event cameras connected: what EventCapture::open("davis:...") takes)
 //
 // Per file: detected format, sensor size, event count (ON / OFF, and left / right for stereo files), first
 // and last timestamp, duration, and the events the reader rejected (outside the sensor), found going back in
 // time, or could not place in time. Exit status 1 when any file could not be read (the error names it).
+// --stats adds, per camera, what the stream looks like (EventStatistics: event rate, ON share, events per
+// pixel per edge crossing, intervals at a pixel, isolated events, pixels active in 10 ms) and ends with one
+// Markdown table of every file and scene side by side: how a simulated scene compares with real recordings.
 
 #include <opencv2/event.hpp>
 
@@ -27,11 +31,48 @@ struct Info
     bool stereo = false;
     int64 events = 0, on = 0, left = 0, first = -1, last = -1;
     double rejected = 0, backwards = 0, skipped = 0;
+    std::vector<EventStreamStatistics> cameras;  // --stats: per camera (left, right), or one for mono
 };
 
-Info probe(const std::string& path, Size sensor, bool oneBased, int leftValue)
+// --stats: one EventStatistics per camera, created once the sensor size is known.
+class CameraStatistics
+{
+public:
+    explicit CameraStatistics(bool enabled) : enabled_(enabled) {}
+
+    void add(const std::vector<Event>& packet, Size size)
+    {
+        if (!enabled_ || packet.empty())
+            return;
+        if (stats_.empty())
+            for (int c = 0; c < 2; c++)
+                stats_.push_back(EventStatistics::create(size));
+        split_[0].clear();
+        split_[1].clear();
+        for (const Event& e : packet)
+            split_[e.camera == CAMERA_LEFT ? 0 : 1].push_back(e);
+        for (int c = 0; c < 2; c++)
+            stats_[c]->update(split_[c]);
+    }
+
+    std::vector<EventStreamStatistics> result(bool stereo) const
+    {
+        std::vector<EventStreamStatistics> out;
+        for (size_t c = 0; c < stats_.size() && c < (stereo ? 2u : 1u); c++)
+            out.push_back(stats_[c]->getStatistics());
+        return out;
+    }
+
+private:
+    bool enabled_;
+    std::vector<Ptr<EventStatistics>> stats_;
+    std::vector<Event> split_[2];
+};
+
+Info probe(const std::string& path, Size sensor, bool oneBased, int leftValue, bool withStatistics)
 {
     Info info;
+    CameraStatistics statistics(withStatistics);
     info.file = path;
     try
     {
@@ -57,10 +98,51 @@ Info probe(const std::string& path, Size sensor, bool oneBased, int leftValue)
             if (info.first < 0)
                 info.first = packet.front().t;
             info.last = packet.back().t;
+            statistics.add(packet, info.size);
         }
+        info.cameras = statistics.result(info.stereo);
         info.rejected = cap.get(EVENT_CAP_PROP_REJECTED_OUTSIDE);
         info.backwards = cap.get(EVENT_CAP_PROP_TIME_BACKWARDS);
         info.skipped = cap.get(EVENT_CAP_PROP_SKIPPED);
+    }
+    catch (const cv::Exception& e)
+    {
+        info.error = e.err;
+    }
+    return info;
+}
+
+// A simulator scene, generated in memory in 10 ms steps (--scene).
+Info probeScene(const std::string& scene, double durationMs, bool withStatistics)
+{
+    Info info;
+    info.file = "scene " + scene + " (" + std::to_string((int)durationMs) + " ms)";
+    CameraStatistics statistics(withStatistics);
+    try
+    {
+        Ptr<StereoEventSimulator> sim = StereoEventSimulator::create(scene);
+        info.format = "simulated";
+        info.size = sim->getSensorSize();
+        info.stereo = true;
+        std::vector<Event> packet;
+        Mat truth;
+        for (double t = 10000; t < durationMs * 1000 + 10000; t += 10000)
+        {
+            sim->generate(std::min(t, durationMs * 1000), packet, truth);
+            if (packet.empty())
+                continue;
+            for (const Event& e : packet)
+            {
+                info.on += e.p;
+                info.left += e.camera == CAMERA_LEFT;
+            }
+            info.events += (int64)packet.size();
+            if (info.first < 0)
+                info.first = packet.front().t;
+            info.last = packet.back().t;
+            statistics.add(packet, info.size);
+        }
+        info.cameras = statistics.result(true);
     }
     catch (const cv::Exception& e)
     {
@@ -102,6 +184,21 @@ void printJson(const Info& i, bool last)
                   << ", \"duration_us\": " << (i.events ? i.last - i.first : 0)
                   << ", \"rejected_outside\": " << (int64)i.rejected << ", \"time_backwards\": " << (int64)i.backwards
                   << ", \"skipped\": " << (int64)i.skipped;
+    if (!i.cameras.empty())
+    {
+        std::cout << ", \"statistics\": [";
+        for (size_t c = 0; c < i.cameras.size(); c++)
+        {
+            const EventStreamStatistics& st = i.cameras[c];
+            std::cout << (c ? ", " : "") << "{\"camera\": " << c << ", \"event_rate\": " << st.eventRate
+                      << ", \"on_share\": " << st.onShare << ", \"events_per_crossing\": " << st.eventsPerCrossing
+                      << ", \"interval_p10_us\": " << st.intervalP10Us << ", \"interval_median_us\": "
+                      << st.intervalMedianUs << ", \"interval_p90_us\": " << st.intervalP90Us
+                      << ", \"isolated_share\": " << st.isolatedShare << ", \"active_pixel_share\": "
+                      << st.activePixelShare << "}";
+        }
+        std::cout << "]";
+    }
     std::cout << "}" << (last ? "" : ",") << "\n";
 }
 
@@ -122,13 +219,41 @@ void printText(const Info& i)
               << (i.events ? (i.last - i.first) / 1e6 : 0.0) << " s\n"
               << "  rejected:  " << (int64)i.rejected << " outside the sensor, " << (int64)i.backwards
               << " going back in time, " << (int64)i.skipped << " without time base\n";
+    for (size_t c = 0; c < i.cameras.size(); c++)
+    {
+        const EventStreamStatistics& st = i.cameras[c];
+        std::cout << "  " << (i.stereo ? (c == 0 ? "left:      " : "right:     ") : "stream:    ") << st.eventRate / 1e3
+                  << " kev/s, ON " << 100 * st.onShare << " %, " << st.eventsPerCrossing
+                  << " events per pixel per edge crossing, interval at a pixel " << st.intervalP10Us / 1e3 << " / "
+                  << st.intervalMedianUs / 1e3 << " / " << st.intervalP90Us / 1e3 << " ms (p10 / median / p90), "
+                  << 100 * st.isolatedShare << " % isolated, " << 100 * st.activePixelShare
+                  << " % of pixels active in 10 ms\n";
+    }
+}
+
+// --stats: every file's and scene's cameras side by side.
+void printStatisticsTable(const std::vector<Info>& infos)
+{
+    std::cout << "\n| recording | camera | kev/s | ON share | events per crossing | interval p10 / median / p90 [ms] "
+                 "| isolated | pixels active in 10 ms |\n|---|---|---|---|---|---|---|---|\n";
+    for (const Info& i : infos)
+        for (size_t c = 0; c < i.cameras.size(); c++)
+        {
+            const EventStreamStatistics& st = i.cameras[c];
+            std::printf("| %s | %s | %.1f | %.2f | %.2f | %.3f / %.1f / %.0f | %.1f %% | %.2f %% |\n", i.file.c_str(),
+                        i.stereo ? (c == 0 ? "left" : "right") : "-", st.eventRate / 1e3, st.onShare,
+                        st.eventsPerCrossing, st.intervalP10Us / 1e3, st.intervalMedianUs / 1e3,
+                        st.intervalP90Us / 1e3, 100 * st.isolatedShare, 100 * st.activePixelShare);
+        }
+    std::fflush(stdout);
 }
 
 int listDevices()
 {
     const std::vector<EventDeviceInfo> devices = listEventDevices();
     if (devices.empty())
-        std::cout << "no event camera connected (DAVIS over USB; see doc/live_davis.md for permissions)\n";
+        std::cout << "no event camera connected (DAVIS over USB; a camera that is plugged in but not listed needs a udev rule "
+                     "granting access to USB vendor 152a, or root)\n";
     for (const EventDeviceInfo& d : devices)
     {
         std::cout << d.source << "\n  model:     " << d.model << ", serial " << d.serial << ", " << d.usbLocation
@@ -148,6 +273,9 @@ const char* const keys =
     "{help h            | false | print this message}"
     "{@files            |       | one or more recordings}"
     "{json              | false | print JSON instead of text}"
+    "{stats             | false | add what each camera's stream looks like, and a table of all side by side}"
+    "{scene             |       | simulator scenes to describe, comma separated (e.g. two_planes,cluttered)}"
+    "{duration-ms       | 1000  | length of each simulated scene [ms]}"
     "{devices           | false | list the event cameras connected (what EventCapture::open(\"davis:N\") takes)}"
     "{sensor            |       | sensor size WxH or a name (DVS128, DAVIS240, DAVIS346) when the format has none}"
     "{one-based         | false | text recordings count pixels from 1}"
@@ -155,10 +283,11 @@ const char* const keys =
 
 int main(int argc, char** argv)
 {
-    bool json = false, oneBased = false;
+    bool json = false, oneBased = false, withStatistics = false;
     int leftValue = 0;
+    double durationMs = 0;
     Size sensor;
-    std::vector<std::string> files;
+    std::vector<std::string> files, scenes;
     try
     {
         SampleCommandLine cmd(argc, argv, keys,
@@ -169,13 +298,22 @@ int main(int argc, char** argv)
         if (cmd.has("devices"))
             return listDevices();
         json = cmd.has("json");
+        withStatistics = cmd.has("stats");
         oneBased = cmd.has("one-based");
         leftValue = cmd.get<int>("left-camera-value");
+        durationMs = cmd.get<double>("duration-ms");
         if (cmd.has("sensor"))
             sensor = parseSensorSize(cmd.get<std::string>("sensor"));
+        std::stringstream list(cmd.get<std::string>("scene"));
+        std::string scene;
+        while (std::getline(list, scene, ','))
+            if (!scene.empty())
+                scenes.push_back(scene);
         files = cmd.positionals();
-        if (files.empty())
+        if (files.empty() && scenes.empty())
             throw std::runtime_error("no recording given: event_info [options] FILE... (--help lists the options)");
+        if (!(durationMs > 0))
+            throw std::runtime_error("--duration-ms must be > 0");
     }
     catch (const cv::Exception& e)
     {
@@ -188,18 +326,25 @@ int main(int argc, char** argv)
         return 2;
     }
     bool failed = false;
+    std::vector<Info> infos;
     if (json)
         std::cout << "[\n";
-    for (size_t k = 0; k < files.size(); k++)
+    const size_t total = files.size() + scenes.size();
+    for (size_t k = 0; k < total; k++)
     {
-        const Info info = probe(files[k], sensor, oneBased, leftValue);
+        const Info info = k < files.size() ? probe(files[k], sensor, oneBased, leftValue, withStatistics)
+                                           : probeScene(scenes[k - files.size()], durationMs, withStatistics);
         failed |= !info.error.empty();
         if (json)
-            printJson(info, k + 1 == files.size());
+            printJson(info, k + 1 == total);
         else
             printText(info);
+        std::cout.flush();
+        infos.push_back(info);
     }
     if (json)
         std::cout << "]\n";
+    else if (withStatistics)
+        printStatisticsTable(infos);
     return failed ? 1 : 0;
 }

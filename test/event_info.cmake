@@ -17,6 +17,16 @@ foreach(expected [["format": "TEXT"]] [["width": 8]] [["height": 6]] [["stereo":
     message(FATAL_ERROR "event_info --json output lacks ${expected}")
   endif()
 endforeach()
+# --stats, per camera: the right camera's two events, (3, 4) OFF and (7, 5) ON, are one of each polarity and
+# not neighbours (both isolated); the left camera's one event is ON.
+execute_process(COMMAND "${EVENT_INFO}" --json --stats "${fixture}" RESULT_VARIABLE rc OUTPUT_VARIABLE out)
+foreach(expected [["camera": 0, "event_rate": 0, "on_share": 1,]] [["camera": 1, "event_rate": 666.667, "on_share": 0.5,]]
+                 [["isolated_share": 1, "active_pixel_share": 0.0416667}]])
+  string(FIND "${out}" "${expected}" at)
+  if(NOT rc EQUAL 0 OR at EQUAL -1)
+    message(FATAL_ERROR "event_info --json --stats output lacks ${expected}: ${out}")
+  endif()
+endforeach()
 execute_process(COMMAND "${EVENT_INFO}" "${WORK_DIR}/missing.aedat4" RESULT_VARIABLE rc OUTPUT_VARIABLE out)
 if(NOT rc EQUAL 1 OR NOT out MATCHES "missing.aedat4: cannot open")
   message(FATAL_ERROR "a missing file gave exit status ${rc} and: ${out}")

@@ -32,6 +32,14 @@ assert ts.shape == (6, 8)
 assert abs(ts[2, 1] - np.exp(-1.5)) < 1e-6 and abs(ts[0, 3] - 1.0) < 1e-6 and ts[5, 0] == 0 and abs(ts[5, 7] - np.exp(-1.0)) < 1e-6
 assert surface.getEventCount() == 3
 
+# EventStatistics: 3 events over 1.5 ms, 2 ON, at (1, 2), (7, 5) and (3, 0): no two are neighbours, so all
+# three are isolated, and each is its own edge crossing.
+stats = ev.EventStatistics_create((8, 6))
+stats.update(packet)
+st = stats.getStatistics()
+assert st.events == 3 and st.durationUs == 1500 and abs(st.onShare - 2 / 3) < 1e-12, (st.events, st.durationUs)
+assert st.isolatedShare == 1.0 and st.eventsPerCrossing == 1.0, (st.isolatedShare, st.eventsPerCrossing)
+
 # EventWriter -> EventCapture through a file.
 path = os.path.join(tempfile.mkdtemp(), "events.aedat4")
 writer = ev.EventWriter(path, (8, 6))
