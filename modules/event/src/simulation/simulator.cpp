@@ -61,7 +61,22 @@ struct PlanePose
 {
     Vec3d c, u, v, n;   // centre, in-plane axes, normal
     double cosT, sinT;  // texture rotation
+    // Swinging planes: a point X moves at pivotVelocity + angularVelocity x (X - pivot).
+    bool swinging = false;
+    Vec3d pivot, pivotVelocity, angularVelocity;
 };
+
+using SimulatedEvent = std::pair<Event, std::array<float, 6>>;
+
+bool earlierEvent(const SimulatedEvent& a, const SimulatedEvent& b)
+{
+    const Event& e = a.first;
+    const Event& g = b.first;
+    if (e.t != g.t) return e.t < g.t;
+    if (e.camera != g.camera) return e.camera < g.camera;
+    if (e.y != g.y) return e.y < g.y;
+    return e.x < g.x;
+}
 
 struct Render
 {
@@ -72,13 +87,20 @@ class StereoEventSimulatorImpl CV_FINAL : public StereoEventSimulator
 {
 public:
     StereoEventSimulatorImpl(const std::vector<SimulatedPlane>& planes, const SimulatorSettings& s)
-        : planes_(planes), s_(s), rng_((uint64)(s.seed * 7919 + 17))
+        : planes_(planes), s_(s), rng_((uint64)(s.seed * 7919 + 17)), jitterRng_((uint64)(s.seed * 7919 + 303)),
+          hotRng_((uint64)(s.seed * 7919 + 505)), leakRng_((uint64)(s.seed * 7919 + 707))
     {
         if (s.resolution.width <= 0 || s.resolution.height <= 0 || !(s.focalLength > 0) || !(s.baseline > 0))
             CV_Error(Error::StsBadArg, "StereoEventSimulator: resolution, focal length and baseline must be positive");
         if (!(s.thresholdOn > 0 && s.thresholdOff > 0 && s.maxPixelStep > 0 && s.maxStepUs > 0))
             CV_Error(Error::StsBadArg, "StereoEventSimulator: thresholds and step limits must be positive");
+        if (!(s.latencyUs >= 0 && s.latencySigmaUs >= 0 && s.jitterUs >= 0 && s.hotPixelShare >= 0 &&
+              s.hotPixelShare <= 1 && s.hotPixelRateHz >= 0 && s.leakRateHz >= 0 && s.noiseRateHz >= 0 &&
+              std::abs(s.rightRollRad) < 0.5 && std::abs(s.rightRowOffset) < s.resolution.height))
+            CV_Error(Error::StsBadArg, "StereoEventSimulator: latencies, jitter, rates and the hot-pixel share must "
+                                       "be >= 0 (share <= 1), the roll below 0.5 rad and the row offset within the image");
         const int n = s.resolution.area();
+        RNG latencyRng((uint64)(s.seed * 7919 + 101)), hotPixelRng((uint64)(s.seed * 7919 + 202));
         for (int c = 0; c < 2; c++)
         {
             const double scale = c == CAMERA_RIGHT ? s.rightThresholdScale : 1.0;
@@ -90,6 +112,18 @@ public:
                 cOff_[c][i] = (float)std::max(0.01, scale * (s.thresholdOff + s.thresholdSigma * rng_.gaussian(1.0)));
             }
             lastEvent_[c].assign(n, -1e18);
+            lastStamp_[c].assign(n, std::numeric_limits<int64>::min());
+            delayed_ = s.latencyUs > 0 || s.latencySigmaUs > 0 || s.jitterUs > 0;
+            if (delayed_)
+            {
+                latency_[c].resize(n);
+                for (int i = 0; i < n; i++)
+                    latency_[c][i] = (float)std::max(0.0, s.latencyUs + s.latencySigmaUs * latencyRng.gaussian(1.0));
+            }
+            if (s.hotPixelShare > 0)
+                for (int i = 0; i < n; i++)
+                    if (hotPixelRng.uniform(0.0, 1.0) < s.hotPixelShare)
+                        hotPixels_[c].push_back(std::make_pair(i, hotPixelRng.uniform(0, 2)));
             render(c, 0.0, cur_[c]);
             ref_[c] = cur_[c].logI;
         }
@@ -109,15 +143,18 @@ public:
         // depend on how the simulation is chunked.
         const int64 until = (int64)std::ceil(untilUs);
         size_t k = 0;
-        while (k < pendingEvents_.size() && pendingEvents_[k].t < until)
+        while (k < pending_.size() && pending_[k].first.t < until)
             k++;
-        Mat(std::vector<Event>(pendingEvents_.begin(), pendingEvents_.begin() + k)).copyTo(events);
+        std::vector<Event> out(k);
         Mat gt((int)k, 6, CV_32F);
-        if (k)
-            std::memcpy(gt.data, pendingTruth_.data(), k * 6 * sizeof(float));
+        for (size_t i = 0; i < k; i++)
+        {
+            out[i] = pending_[i].first;
+            std::memcpy(gt.ptr<float>((int)i), pending_[i].second.data(), 6 * sizeof(float));
+        }
+        Mat(out).copyTo(events);
         gt.copyTo(groundTruth);
-        pendingEvents_.erase(pendingEvents_.begin(), pendingEvents_.begin() + k);
-        pendingTruth_.erase(pendingTruth_.begin(), pendingTruth_.begin() + 6 * k);
+        pending_.erase(pending_.begin(), pending_.begin() + k);
         delivered_ = untilUs;
         return true;
     }
@@ -171,6 +208,24 @@ private:
         const double angle = 0.35 + 1.1 * cellValue(p.textureSeed, 7, 3);  // not axis-aligned: edges of all directions
         q.cosT = std::cos(angle);
         q.sinT = std::sin(angle);
+        if (p.swingAmplitude != 0)
+        {
+            // Turn the rigidly moved plane about its pivot: X = P + S (Y - P). A point's velocity is then
+            // dP/dt + (swing rate + S w) x (X - P), with dP/dt = v + w x (P - c).
+            const double phase = 2 * CV_PI * p.swingFrequency * t + p.swingPhase;
+            const Vec3d axis = p.swingAxis * (1.0 / std::max(1e-12, norm(p.swingAxis)));
+            Matx33d sw;
+            Rodrigues(axis * (p.swingAmplitude * std::sin(phase)), sw);
+            q.swinging = true;
+            q.pivot = q.c + p.swingPivot[0] * q.u + p.swingPivot[1] * q.v;
+            q.pivotVelocity = p.velocity + p.angularVelocity.cross(q.pivot - q.c);
+            q.angularVelocity = axis * (p.swingAmplitude * 2 * CV_PI * p.swingFrequency * std::cos(phase)) +
+                                sw * p.angularVelocity;
+            q.c = q.pivot + sw * (q.c - q.pivot);
+            q.u = sw * q.u;
+            q.v = sw * q.v;
+            q.n = sw * q.n;
+        }
         return q;
     }
 
@@ -195,6 +250,9 @@ private:
         const Size sz = s_.resolution;
         const double f = s_.focalLength, cx = 0.5 * (sz.width - 1), cy = 0.5 * (sz.height - 1);
         const Vec3d origin(camera == CAMERA_RIGHT ? s_.baseline : 0.0, 0, 0);
+        // The right camera's pixel grid against the ideal rectified one (rightRollRad, rightRowOffset).
+        const bool misrectified = camera == CAMERA_RIGHT && (s_.rightRollRad != 0 || s_.rightRowOffset != 0);
+        const double cr = std::cos(s_.rightRollRad), sr = std::sin(s_.rightRollRad);
         std::vector<PlanePose> poses;
         for (const SimulatedPlane& p : planes_)
             poses.push_back(pose(p, tUs));
@@ -208,7 +266,13 @@ private:
         {
             for (int x = 0; x < sz.width; x++)
             {
-                const Vec3d d((x - cx) / f, (y - cy) / f, 1.0);
+                Vec3d d((x - cx) / f, (y - cy) / f, 1.0);
+                if (misrectified)
+                {
+                    // Raw pixel -> ideal pixel: undo the offset, then the roll.
+                    const double rx = x - cx, ry = y - cy - s_.rightRowOffset;
+                    d = Vec3d((cr * rx + sr * ry) / f, (-sr * rx + cr * ry) / f, 1.0);
+                }
                 double best = std::numeric_limits<double>::infinity(), value = 0;
                 int hit = -1;
                 Vec3d point;
@@ -242,10 +306,19 @@ private:
                 out.depth[i] = (float)best;
                 // Motion of the visible point, projected: u = f X / Z + cx.
                 const SimulatedPlane& p = planes_[hit];
-                const Vec3d vel = p.velocity + p.angularVelocity.cross(point - poses[hit].c);
+                const PlanePose& q = poses[hit];
+                const Vec3d vel = q.swinging ? q.pivotVelocity + q.angularVelocity.cross(point - q.pivot)
+                                             : p.velocity + p.angularVelocity.cross(point - q.c);
                 const Vec3d rel = point - origin;
                 out.flowX[i] = (float)(f * (vel[0] * rel[2] - rel[0] * vel[2]) / (rel[2] * rel[2]));
                 out.flowY[i] = (float)(f * (vel[1] * rel[2] - rel[1] * vel[2]) / (rel[2] * rel[2]));
+                if (misrectified)
+                {
+                    // Ideal image motion -> the raw grid's (the roll turns it; the offset does not move it).
+                    const float fx = out.flowX[i], fy = out.flowY[i];
+                    out.flowX[i] = (float)(cr * fx - sr * fy);
+                    out.flowY[i] = (float)(sr * fx + cr * fy);
+                }
             }
         }
     }
@@ -262,33 +335,25 @@ private:
         // by (t, camera, y, x) orders the whole stream that way (left first on equal times).
         const double dt = std::max(1.0, std::floor(std::min(s_.maxStepUs, maxFlow > 0 ? s_.maxPixelStep / maxFlow * 1e6 : s_.maxStepUs)));
         const double t0 = t_, t1 = t_ + dt;
-        std::vector<std::pair<Event, std::array<float, 6>>> stepEvents;
+        std::vector<SimulatedEvent> stepEvents;
         for (int c = 0; c < 2; c++)
             render(c, t1, next_[c]);
         for (int c = 0; c < 2; c++)  // after both renders: the occlusion test looks at the other camera
             fire(c, t0, t1, stepEvents);
         addNoise(t0, t1, stepEvents);
-        std::sort(stepEvents.begin(), stepEvents.end(), [](const std::pair<Event, std::array<float, 6>>& a,
-                                                           const std::pair<Event, std::array<float, 6>>& b) {
-            const Event& e = a.first;
-            const Event& g = b.first;
-            if (e.t != g.t) return e.t < g.t;
-            if (e.camera != g.camera) return e.camera < g.camera;
-            if (e.y != g.y) return e.y < g.y;
-            return e.x < g.x;
-        });
-        for (const auto& e : stepEvents)
-        {
-            pendingEvents_.push_back(e.first);
-            pendingTruth_.insert(pendingTruth_.end(), e.second.begin(), e.second.end());
-        }
+        std::sort(stepEvents.begin(), stepEvents.end(), earlierEvent);
+        // Without delays every event of this step is later than every pending one and the merge only
+        // appends; delayed events may land among those of earlier steps.
+        const size_t before = pending_.size();
+        pending_.insert(pending_.end(), stepEvents.begin(), stepEvents.end());
+        std::inplace_merge(pending_.begin(), pending_.begin() + (std::ptrdiff_t)before, pending_.end(), earlierEvent);
         for (int c = 0; c < 2; c++)
             std::swap(cur_[c], next_[c]);
         t_ = t1;
     }
 
     // Events of one camera between the renders at t0 (cur_) and t1 (next_).
-    void fire(int c, double t0, double t1, std::vector<std::pair<Event, std::array<float, 6>>>& out)
+    void fire(int c, double t0, double t1, std::vector<SimulatedEvent>& out)
     {
         const Size sz = s_.resolution;
         const Render& a = cur_[c];
@@ -316,7 +381,13 @@ private:
                     if (te - lastEvent_[c][i] < s_.refractoryUs)
                         continue;  // inside the refractory period: the level is consumed, no event
                     lastEvent_[c][i] = te;
-                    const int64 ts = std::min((int64)t1 - 1, std::max((int64)t0, (int64)std::floor(te)));
+                    int64 ts = std::min((int64)t1 - 1, std::max((int64)t0, (int64)std::floor(te)));
+                    if (delayed_)
+                    {
+                        const double jitter = s_.jitterUs > 0 ? -s_.jitterUs * std::log(1.0 - jitterRng_.uniform(0.0, 1.0)) : 0.0;
+                        ts = std::max(lastStamp_[c][i], std::max((int64)t0, (int64)std::floor(te + latency_[c][i] + jitter)));
+                        lastStamp_[c][i] = ts;
+                    }
                     out.push_back(std::make_pair(Event(ts, x, y, up ? POLARITY_ON : POLARITY_OFF, c), truth(c, x, y)));
                 }
             }
@@ -376,7 +447,7 @@ private:
     // Poisson count by inversion. exp(-lambda) underflows to 0 beyond lambda ~ 745 (high noise rates on
     // large sensors), after which inversion would never stop; a Poisson(lambda) count is the sum of
     // Poisson(lambda / k) counts, so larger means are drawn in chunks of at most 500.
-    int poissonCount(double lambda)
+    static int poissonCount(double lambda, RNG& rng)
     {
         int total = 0;
         while (lambda > 0)
@@ -385,7 +456,7 @@ private:
             lambda -= chunk;
             int count = 0;
             double p = std::exp(-chunk), cdf = p;
-            const double u = rng_.uniform(0.0, 1.0);
+            const double u = rng.uniform(0.0, 1.0);
             while (u > cdf && p > 0)
             {
                 count++;
@@ -397,15 +468,39 @@ private:
         return total;
     }
 
-    void addNoise(double t0, double t1, std::vector<std::pair<Event, std::array<float, 6>>>& out)
+    void addNoise(double t0, double t1, std::vector<SimulatedEvent>& out)
     {
+        const std::array<float, 6> noise = { { 0, 0, 0, 0, 0, (float)GT_FLAG_NOISE } };
+        const Size sz = s_.resolution;
+        const double seconds = (t1 - t0) * 1e-6;
+        for (int c = 0; c < 2; c++)
+        {
+            for (const std::pair<int, int>& hot : hotPixels_[c])
+            {
+                const int count = poissonCount(s_.hotPixelRateHz * seconds, hotRng_);
+                for (int k = 0; k < count; k++)
+                {
+                    const int64 ts = std::min((int64)t1 - 1, (int64)std::floor(hotRng_.uniform(t0, t1)));
+                    out.push_back(std::make_pair(Event(ts, hot.first % sz.width, hot.first / sz.width, hot.second, c), noise));
+                }
+            }
+            if (s_.leakRateHz > 0)
+            {
+                const int count = poissonCount(s_.leakRateHz * seconds * sz.area(), leakRng_);
+                for (int k = 0; k < count; k++)
+                {
+                    const int x = leakRng_.uniform(0, sz.width), y = leakRng_.uniform(0, sz.height);
+                    const int64 ts = std::min((int64)t1 - 1, (int64)std::floor(leakRng_.uniform(t0, t1)));
+                    out.push_back(std::make_pair(Event(ts, x, y, POLARITY_ON, c), noise));
+                }
+            }
+        }
         if (!(s_.noiseRateHz > 0))
             return;
-        const Size sz = s_.resolution;
         const double expected = s_.noiseRateHz * (t1 - t0) * 1e-6 * sz.area();
         for (int c = 0; c < 2; c++)
         {
-            const int count = poissonCount(expected);
+            const int count = poissonCount(expected, rng_);
             for (int k = 0; k < count; k++)
             {
                 const int x = rng_.uniform(0, sz.width), y = rng_.uniform(0, sz.height);
@@ -419,13 +514,15 @@ private:
 
     std::vector<SimulatedPlane> planes_;
     SimulatorSettings s_;
-    RNG rng_;
-    std::vector<float> cOn_[2], cOff_[2], ref_[2];
+    RNG rng_, jitterRng_, hotRng_, leakRng_;
+    std::vector<float> cOn_[2], cOff_[2], ref_[2], latency_[2];
     std::vector<double> lastEvent_[2];
+    std::vector<int64> lastStamp_[2];
+    std::vector<std::pair<int, int>> hotPixels_[2];  // pixel index, polarity
+    bool delayed_ = false;
     Render cur_[2], next_[2];
     double t_ = 0, delivered_ = 0;
-    std::vector<Event> pendingEvents_;
-    std::vector<float> pendingTruth_;
+    std::vector<SimulatedEvent> pending_;  // simulated, not yet handed out; in stream order
 };
 
 SimulatedPlane texturedPlane(Vec3d center, Vec2d halfSize, Vec3d velocity, double cellSize, int seed)

@@ -54,6 +54,14 @@ struct CV_EXPORTS SimulatedPlane
     double intensity = 1.0;          //!< brightest value (linear units)
     double contrast = 0.8;           //!< blocks: intensities spread over [intensity * (1 - contrast), intensity]
     int textureSeed = 1;             //!< blocks: pattern seed
+    /** Swing (limbs): after its rigid motion the plane turns about @p swingPivot (a point in the plane, in
+    its in-plane coordinates [m], e.g. (0, -halfSize[1]) for the top end) by swingAmplitude * sin(2 pi
+    swingFrequency t + swingPhase) [rad] about the world axis @p swingAxis (unit). Zero amplitude: no swing. */
+    Vec3d swingAxis = Vec3d(0, 0, 1);
+    Vec2d swingPivot = Vec2d(0, 0);  //!< @copydoc swingAxis
+    double swingAmplitude = 0;       //!< @copydoc swingAxis
+    double swingFrequency = 0;       //!< @copydoc swingAxis
+    double swingPhase = 0;           //!< @copydoc swingAxis
 };
 
 /** @brief Sensors, pair geometry and event generation of the simulator. */
@@ -73,7 +81,31 @@ struct CV_EXPORTS SimulatorSettings
     double backgroundIntensity = 0.05; //!< where no plane is hit
     int seed = 0;                      //!< everything random (thresholds, noise) derives from it
 
-    /** @brief Presets: SENSOR_DAVIS240 (240 x 180, f = 200 px) and SENSOR_DAVIS346 (346 x 260, f = 250 px). */
+    // Sensor non-idealities (all off by default). Each draws from its own random sequence, so turning one on
+    // leaves the events the others make unchanged.
+    /** Readout latency: every event is stamped this long after its threshold crossing, plus a per-pixel
+    offset drawn once from a normal distribution of standard deviation latencySigmaUs (clipped at 0) [us]. */
+    double latencyUs = 0;
+    double latencySigmaUs = 0;         //!< @copydoc latencyUs
+    /** Timestamp jitter: a further delay per event, exponential with this mean [us]. A pixel's events keep
+    their order (a stamp earlier than the pixel's previous one is moved up to it). */
+    double jitterUs = 0;
+    /** Hot pixels: this share of each camera's pixels fires on its own, at hotPixelRateHz, each with one
+    polarity (flagged GT_FLAG_NOISE). */
+    double hotPixelShare = 0;
+    double hotPixelRateHz = 0;         //!< @copydoc hotPixelShare
+    /** Leak events: ON events every pixel fires on its own, Poisson at this rate [events/s] (flagged
+    GT_FLAG_NOISE). */
+    double leakRateHz = 0;
+    /** Imperfect rectification of the right camera: its pixel grid is rotated by rightRollRad about the image
+    centre and shifted down by rightRowOffset [px] against the ideal rectified camera, so a point at ideal
+    pixel (u, v) is seen at R(roll) (u - cx, v - cy) + (cx, cy + rightRowOffset). The ground-truth disparity
+    stays the ideal f B / Z. */
+    double rightRowOffset = 0;
+    double rightRollRad = 0;           //!< @copydoc rightRowOffset
+
+    /** @brief Presets: SENSOR_DAVIS240 (240 x 180, f = 200 px) and SENSOR_DAVIS346 (346 x 260, f = 250 px),
+    ideal sensors. */
     static SimulatorSettings preset(int sensorModel);
 };
 

@@ -1,0 +1,394 @@
+// This file is part of OpenCV project.
+// It is subject to the license terms in the LICENSE file found in the top-level directory
+// of this distribution and at http://opencv.org/license.html.
+
+// The simulator's sensor and rig non-idealities, each against its closed form.
+
+#include "test_precomp.hpp"
+
+namespace opencv_test { namespace {
+
+// A bright uniform plane whose right edge sweeps right over a dark background (log contrast ln 9 = 2.197).
+std::vector<SimulatedPlane> sweepingEdge()
+{
+    SimulatedPlane back;
+    back.center = Vec3d(0, 0, 2);
+    back.halfSize = Vec2d(10, 10);
+    back.texture = TEXTURE_UNIFORM;
+    back.intensity = 0.1;
+    SimulatedPlane front = back;
+    front.center = Vec3d(-1.1, 0, 1);   // the edge starts 20 px left of the centre
+    front.halfSize = Vec2d(1.0, 10);
+    front.intensity = 0.9;
+    front.velocity = Vec3d(0.4, 0, 0);  // 80 px/s at f = 200 px
+    return { back, front };
+}
+
+// A scene where nothing moves: every event is the sensor's own.
+std::vector<SimulatedPlane> staticScene()
+{
+    SimulatedPlane back;
+    back.center = Vec3d(0, 0, 2);
+    back.halfSize = Vec2d(10, 10);
+    back.texture = TEXTURE_UNIFORM;
+    back.intensity = 0.3;
+    return { back };
+}
+
+SimulatorSettings smallSensor()
+{
+    SimulatorSettings s;
+    s.resolution = Size(96, 32);
+    s.thresholdSigma = 0;
+    s.refractoryUs = 0;
+    return s;
+}
+
+typedef std::map<std::tuple<int, int, int>, std::vector<int64>> PixelTimes;  // (camera, y, x) -> stamps
+
+PixelTimes simulate(const std::vector<SimulatedPlane>& scene, const SimulatorSettings& s, double untilUs,
+                    Mat* truth = nullptr, std::vector<Event>* events = nullptr)
+{
+    Ptr<StereoEventSimulator> sim = StereoEventSimulator::create(scene, s);
+    std::vector<Event> ev;
+    Mat gt;
+    sim->generate(untilUs, ev, gt);
+    PixelTimes out;
+    for (size_t i = 0; i < ev.size(); i++)
+    {
+        if (i > 0)
+            EXPECT_LE(ev[i - 1].t, ev[i].t) << "the stream is in time order, event " << i;
+        out[std::make_tuple((int)ev[i].camera, (int)ev[i].y, (int)ev[i].x)].push_back(ev[i].t);
+    }
+    if (truth)
+        *truth = gt;
+    if (events)
+        *events = ev;
+    return out;
+}
+
+// Delay of every event against the same simulation without delays (the firing is the same: the delays draw
+// from their own random sequences), the first events of each pixel up to the undelayed run's count.
+std::vector<std::pair<double, std::tuple<int, int, int>>> delays(const SimulatorSettings& delayed, double untilUs)
+{
+    const PixelTimes base = simulate(sweepingEdge(), smallSensor(), untilUs);
+    const PixelTimes late = simulate(sweepingEdge(), delayed, untilUs + 20000);
+    std::vector<std::pair<double, std::tuple<int, int, int>>> out;
+    for (const auto& kv : base)
+    {
+        const auto it = late.find(kv.first);
+        EXPECT_TRUE(it != late.end());
+        if (it == late.end())
+            continue;
+        EXPECT_GE(it->second.size(), kv.second.size());
+        for (size_t k = 0; k < kv.second.size() && k < it->second.size(); k++)
+            out.push_back(std::make_pair((double)(it->second[k] - kv.second[k]), kv.first));
+    }
+    return out;
+}
+
+TEST(Event_SimulatorSensor, latency_is_a_fixed_delay_per_pixel_with_the_set_mean_and_spread)
+{
+    SimulatorSettings s = smallSensor();
+    s.latencyUs = 500;
+    s.latencySigmaUs = 150;
+    const auto d = delays(s, 500000);
+    ASSERT_GT(d.size(), 5000u);
+    // Per pixel, one delay (stamps are whole microseconds: within 1 us).
+    std::map<std::tuple<int, int, int>, std::pair<double, double>> range;
+    for (const auto& e : d)
+    {
+        auto it = range.find(e.second);
+        if (it == range.end())
+            range[e.second] = std::make_pair(e.first, e.first);
+        else
+        {
+            it->second.first = std::min(it->second.first, e.first);
+            it->second.second = std::max(it->second.second, e.first);
+        }
+    }
+    double sum = 0, sumSq = 0;
+    for (const auto& kv : range)
+    {
+        EXPECT_LE(kv.second.second - kv.second.first, 1.0);
+        sum += kv.second.first;
+        sumSq += kv.second.first * kv.second.first;
+    }
+    const double n = (double)range.size(), mean = sum / n, sd = std::sqrt(sumSq / n - mean * mean);
+    ASSERT_GT(n, 1000);
+    EXPECT_NEAR(500, mean, 3 * 150 / std::sqrt(n) + 1);  // the mean of n normal draws, +-1 us of rounding
+    EXPECT_NEAR(150, sd, 0.06 * 150);
+}
+
+TEST(Event_SimulatorSensor, jitter_is_an_exponential_delay_per_event)
+{
+    SimulatorSettings s = smallSensor();
+    s.jitterUs = 300;
+    // One event per pixel and crossing (threshold above half the contrast): no two of a pixel's events
+    // close enough for the order rule to move one.
+    SimulatorSettings base = smallSensor();
+    s.thresholdOn = s.thresholdOff = base.thresholdOn = base.thresholdOff = 2.0;
+    const PixelTimes ideal = simulate(sweepingEdge(), base, 500000);
+    const PixelTimes late = simulate(sweepingEdge(), s, 520000);
+    std::vector<double> d;
+    for (const auto& kv : ideal)
+    {
+        ASSERT_EQ(1u, kv.second.size());
+        d.push_back((double)(late.at(kv.first)[0] - kv.second[0]));
+    }
+    ASSERT_GT(d.size(), 2000u);
+    std::sort(d.begin(), d.end());
+    const double mean = std::accumulate(d.begin(), d.end(), 0.0) / (double)d.size();
+    // Exponential with mean J: mean J, median J ln 2, 90th percentile J ln 10 (stamps floored: -0.5 us).
+    const double n = (double)d.size();
+    EXPECT_NEAR(300 - 0.5, mean, 4 * 300 / std::sqrt(n));
+    EXPECT_NEAR(300 * std::log(2.0), d[d.size() / 2], 0.08 * 300 * std::log(2.0));
+    EXPECT_NEAR(300 * std::log(10.0), d[d.size() * 9 / 10], 0.08 * 300 * std::log(10.0));
+    EXPECT_GE(d.front(), 0.0);
+}
+
+TEST(Event_SimulatorSensor, refractory_period_spaces_a_pixels_events)
+{
+    // The edge's 10 levels are crossed within one render step (about 3 ms): without a refractory period a
+    // pixel fires all 10; with 1 ms at most one per millisecond.
+    SimulatorSettings s = smallSensor();
+    s.refractoryUs = 1000;
+    const PixelTimes times = simulate(sweepingEdge(), s, 500000);
+    ASSERT_GT(times.size(), 1000u);
+    size_t events = 0;
+    for (const auto& kv : times)
+    {
+        for (size_t k = 1; k < kv.second.size(); k++)
+            EXPECT_GE(kv.second[k] - kv.second[k - 1], 999) << "pixel events closer than the refractory period";
+        events += kv.second.size();
+    }
+    const PixelTimes free = simulate(sweepingEdge(), smallSensor(), 500000);
+    size_t freeEvents = 0;
+    for (const auto& kv : free)
+        freeEvents += kv.second.size();
+    EXPECT_LT(events * 2, freeEvents) << "the refractory period removes most of a fast edge's events";
+}
+
+TEST(Event_SimulatorSensor, threshold_mismatch_gives_the_expected_mean_count)
+{
+    // Per pixel the edge fires floor(C / c) events, c ~ N(0.2, sigma): the mean count over pixels is
+    // sum_k k P(C / (k + 1) < c <= C / k).
+    const double C = std::log(0.9 / 0.1), mu = 0.2, sigma = 0.04;
+    auto Phi = [&](double c) { return 0.5 * std::erfc(-(c - mu) / (sigma * std::sqrt(2.0))); };
+    double expected = 0;
+    for (int k = 1; k < 200; k++)
+        expected += k * (Phi(C / k) - Phi(C / (k + 1)));
+    SimulatorSettings s = smallSensor();
+    s.thresholdSigma = sigma;
+    const PixelTimes times = simulate(sweepingEdge(), s, 500000);
+    double sum = 0, n = 0;
+    for (const auto& kv : times)
+        if (std::get<0>(kv.first) == CAMERA_LEFT && std::get<2>(kv.first) >= 30 && std::get<2>(kv.first) < 66)
+        {
+            sum += (double)kv.second.size();
+            n++;
+        }
+    ASSERT_GT(n, 1000);
+    EXPECT_NEAR(expected, sum / n, 0.03 * expected);
+    EXPECT_GT(std::abs(expected - std::floor(C / mu)), 0.3) << "the mismatch must move the mean for this test to mean anything";
+}
+
+TEST(Event_SimulatorSensor, hot_pixels_and_leak_events_at_their_rates)
+{
+    SimulatorSettings s = SimulatorSettings::preset(SENSOR_DAVIS240);
+    s.hotPixelShare = 0.005;
+    s.hotPixelRateHz = 400;
+    s.leakRateHz = 0.5;
+    const double seconds = 1.0;
+    Mat gt;
+    std::vector<Event> ev;
+    const PixelTimes times = simulate(staticScene(), s, seconds * 1e6, &gt, &ev);
+    // Nothing moves: every event is noise, and the leak's are ON.
+    for (int i = 0; i < gt.rows; i++)
+        ASSERT_EQ((float)GT_FLAG_NOISE, gt.at<float>(i, GT_FLAGS)) << i;
+    // Hot pixels: about 0.5 % of each camera's pixels, each at 400 Hz, in one polarity. A pixel with more
+    // than 100 events in 1 s is hot (a leak-only pixel has 0.5 on average).
+    std::map<std::tuple<int, int, int>, std::pair<int, int>> polarity;  // pixel -> (ON, OFF)
+    for (const Event& e : ev)
+    {
+        std::pair<int, int>& c = polarity[std::make_tuple((int)e.camera, (int)e.y, (int)e.x)];
+        (e.p ? c.first : c.second)++;
+    }
+    const double area = s.resolution.area();
+    for (int camera = 0; camera < 2; camera++)
+    {
+        double hot = 0, hotEvents = 0, otherEvents = 0, otherOff = 0;
+        for (const auto& kv : polarity)
+        {
+            if (std::get<0>(kv.first) != camera)
+                continue;
+            const int count = kv.second.first + kv.second.second;
+            if (count > 100)
+            {
+                hot++;
+                // Its own polarity, plus at most a few leak events (ON).
+                EXPECT_TRUE(kv.second.second == 0 || kv.second.first <= 10) << "a hot pixel fires one polarity";
+                hotEvents += count;
+            }
+            else
+            {
+                otherEvents += count;
+                otherOff += kv.second.second;
+            }
+        }
+        // Binomial count of hot pixels: mean 216, standard deviation 14.7.
+        EXPECT_NEAR(0.005 * area, hot, 4 * std::sqrt(0.005 * area));
+        EXPECT_NEAR(400 * seconds, hotEvents / hot, 0.03 * 400 * seconds);
+        EXPECT_EQ(0, otherOff) << "leak events are ON";
+        const double expectedLeak = 0.5 * seconds * (area - hot);
+        EXPECT_NEAR(expectedLeak, otherEvents, 4 * std::sqrt(expectedLeak));
+    }
+}
+
+// Normalised correlation of two equally sized event-count images.
+double correlation(const Mat& a, const Mat& b)
+{
+    Mat za, zb;
+    subtract(a, mean(a), za);
+    subtract(b, mean(b), zb);
+    return za.dot(zb) / std::sqrt(za.dot(za) * zb.dot(zb));
+}
+
+// The (dx, dy) that maps a strip of the left camera's event counts onto the right camera's best.
+Point bestShift(const Mat& left, const Mat& right, int x0, int x1)
+{
+    Point best;
+    double bestScore = -2;
+    for (int dy = -4; dy <= 4; dy++)
+        for (int dx = 0; dx <= 40; dx++)
+        {
+            if (x0 - dx < 0)
+                continue;
+            const Rect l(x0, 8, x1 - x0, left.rows - 16), r(x0 - dx, 8 + dy, x1 - x0, left.rows - 16);
+            const double score = correlation(left(l), right(r));
+            if (score > bestScore)
+            {
+                bestScore = score;
+                best = Point(dx, dy);
+            }
+        }
+    return best;
+}
+
+TEST(Event_SimulatorSensor, imperfect_rectification_moves_the_right_cameras_rows)
+{
+    for (int variant = 0; variant < 3; variant++)
+    {
+        Ptr<StereoEventSimulator> ideal = StereoEventSimulator::create("plane");
+        SimulatorSettings s = ideal->getSettings();
+        if (variant == 1)
+            s.rightRowOffset = 2.0;
+        if (variant == 2)
+            s.rightRollRad = 0.02;  // 2 px at 100 px from the centre
+        Ptr<StereoEventSimulator> sim = StereoEventSimulator::create(ideal->getPlanes(), s);
+        std::vector<Event> ev;
+        Mat gt;
+        sim->generate(60000, ev, gt);
+        Mat counts[2] = { Mat::zeros(s.resolution, CV_32F), Mat::zeros(s.resolution, CV_32F) };
+        for (size_t i = 0; i < ev.size(); i++)
+        {
+            ASSERT_NEAR(20.0, gt.at<float>((int)i, GT_DISPARITY), 1e-3) << "the truth stays the ideal f B / Z";
+            counts[ev[i].camera].at<float>(ev[i].y, ev[i].x) += 1;
+        }
+        // Three strips of the left camera, seen 20 px further left by the right one: there centred 100 px left
+        // of the image centre, on it, and 50 px right of it.
+        const Point leftStrip = bestShift(counts[0], counts[1], 20, 60);
+        const Point middle = bestShift(counts[0], counts[1], 120, 160);
+        const Point rightStrip = bestShift(counts[0], counts[1], 170, 210);
+        EXPECT_EQ(20, leftStrip.x) << variant;
+        EXPECT_EQ(20, middle.x) << variant;
+        EXPECT_EQ(20, rightStrip.x) << variant;
+        // Rows: 0 everywhere; +2 everywhere with the offset; with the roll, sin(roll) * (x - cx) in the right
+        // camera: -2, 0 and +1 px.
+        const int expected[3][3] = { { 0, 0, 0 }, { 2, 2, 2 }, { -2, 0, 1 } };
+        EXPECT_EQ(expected[variant][0], leftStrip.y) << variant << ": " << leftStrip << middle << rightStrip;
+        EXPECT_EQ(expected[variant][1], middle.y) << variant << ": " << leftStrip << middle << rightStrip;
+        EXPECT_EQ(expected[variant][2], rightStrip.y) << variant << ": " << leftStrip << middle << rightStrip;
+    }
+}
+
+TEST(Event_SimulatorSensor, swinging_plane_moves_as_its_pivot_and_swing_rate_say)
+{
+    // A bar hanging from a pivot, swinging about the optical axis: its ground-truth flow at the lower end is
+    // the swing rate times the distance to the pivot, across the bar.
+    SimulatedPlane back;
+    back.center = Vec3d(0, 0, 3);
+    back.halfSize = Vec2d(10, 10);
+    back.texture = TEXTURE_UNIFORM;
+    back.intensity = 0.1;
+    SimulatedPlane bar = back;
+    bar.center = Vec3d(0, 0.1, 1);
+    bar.halfSize = Vec2d(0.02, 0.2);
+    bar.intensity = 0.9;
+    bar.swingAxis = Vec3d(0, 0, 1);
+    bar.swingPivot = Vec2d(0, -0.2);   // the top end, at (0, -0.1, 1)
+    bar.swingAmplitude = 0.3;
+    bar.swingFrequency = 1.0;
+    SimulatorSettings s = smallSensor();
+    s.resolution = Size(160, 120);
+    Ptr<StereoEventSimulator> sim = StereoEventSimulator::create({ back, bar }, s);
+    std::vector<Event> ev;
+    Mat gt;
+    sim->generate(100000, ev, gt);
+    ASSERT_GT(ev.size(), 200u);
+    // At t, the angle is 0.3 sin(2 pi t) and the rate 0.3 * 2 pi cos(2 pi t) rad/s. An event at image row y
+    // (below the pivot's row) lies (y - y_pivot) / cos(angle) px from the pivot along the bar; the bar's long
+    // edges move across the bar, along their own normal, at |rate| times that radius [px/s].
+    const double f = s.focalLength, cy = 0.5 * (s.resolution.height - 1), pivotRow = cy + (-0.1) * f;
+    int checked = 0;
+    for (size_t i = 0; i < ev.size(); i++)
+    {
+        if (ev[i].camera != CAMERA_LEFT || gt.at<float>((int)i, GT_DEPTH) == 0)
+            continue;
+        const double t = ev[i].t * 1e-6, angle = 0.3 * std::sin(2 * CV_PI * t), rate = 0.3 * 2 * CV_PI * std::cos(2 * CV_PI * t);
+        const double radiusPx = (ev[i].y - pivotRow) / std::cos(angle);
+        if (radiusPx < 20 || std::abs(gt.at<float>((int)i, GT_FLOW_Y)) > 0.2 * std::abs(gt.at<float>((int)i, GT_FLOW_X)))
+            continue;  // near the pivot, or on the bar's end (a horizontal edge)
+        const double flow = std::hypot(gt.at<float>((int)i, GT_FLOW_X), gt.at<float>((int)i, GT_FLOW_Y));
+        EXPECT_NEAR(std::abs(rate) * radiusPx, flow, 0.05 * std::abs(rate) * radiusPx + 2) << i;
+        checked++;
+    }
+    EXPECT_GT(checked, 100);
+}
+
+TEST(Event_SimulatorSensor, every_effect_on_streams_alike_in_any_chunks)
+{
+    SimulatorSettings s = smallSensor();
+    s.latencyUs = 300;
+    s.latencySigmaUs = 200;
+    s.jitterUs = 150;
+    s.hotPixelShare = 0.01;
+    s.hotPixelRateHz = 200;
+    s.leakRateHz = 1;
+    s.noiseRateHz = 2;
+    s.rightRowOffset = 0.7;
+    s.rightRollRad = 0.01;
+    s.thresholdSigma = 0.03;
+    s.refractoryUs = 200;
+    Ptr<StereoEventSimulator> whole = StereoEventSimulator::create(sweepingEdge(), s);
+    Ptr<StereoEventSimulator> chunked = StereoEventSimulator::create(sweepingEdge(), s);
+    std::vector<Event> all, part, joined;
+    Mat gtAll, gtPart;
+    whole->generate(200000, all, gtAll);
+    std::vector<Mat> truths;
+    for (double t = 7000; t < 200000 + 7000; t += 7000)
+    {
+        chunked->generate(std::min(t, 200000.0), part, gtPart);
+        joined.insert(joined.end(), part.begin(), part.end());
+        truths.push_back(gtPart.clone());
+    }
+    ASSERT_GT(all.size(), 3000u);
+    ASSERT_EQ(all.size(), joined.size());
+    for (size_t i = 0; i < all.size(); i++)
+        ASSERT_EQ(all[i], joined[i]) << i;
+    Mat gtJoined;
+    vconcat(truths, gtJoined);
+    EXPECT_EQ(0, cvtest::norm(gtAll, gtJoined, NORM_INF));
+}
+
+}}  // namespace
