@@ -40,6 +40,7 @@ struct Options
     // Defaults: the keys below.
     std::string scene, input, gt, method, output;
     std::string settings;  // matcher parameters, "key: value" lines (from --set=key=value,...)
+    std::string sensorSettings;  // --sensor-set, as given
     double durationMs = 0, windowMs = 0;
 };
 
@@ -184,7 +185,36 @@ const char* const keys =
     "{method      | sgbm       | coupled, decoupled, fixed, sgbm (StereoEventMatcher modes) or lifetime}"
     "{window-ms   | 33         | evaluation window (and SGBM frame) [ms]}"
     "{output      | evaluation | output folder}"
-    "{set         |            | matcher parameters NAME=VALUE, comma separated (FileStorage names, e.g. uniquenessRatio=20)}";
+    "{set         |            | matcher parameters NAME=VALUE, comma separated (FileStorage names, e.g. uniquenessRatio=20)}"
+    "{sensor-set  |            | simulator settings NAME=VALUE, comma separated (SimulatorSettings fields, e.g. jitterUs=300)}";
+
+// --sensor-set: the numeric SimulatorSettings fields by name.
+void applySimulatorSetting(SimulatorSettings& s, const std::string& name, double value)
+{
+    const std::pair<const char*, double*> fields[] = {
+        { "thresholdOn", &s.thresholdOn }, { "thresholdOff", &s.thresholdOff }, { "thresholdSigma", &s.thresholdSigma }, { "thresholdNoise", &s.thresholdNoise }, { "blurSigmaPx", &s.blurSigmaPx },
+        { "rightThresholdScale", &s.rightThresholdScale }, { "refractoryUs", &s.refractoryUs },
+        { "noiseRateHz", &s.noiseRateHz }, { "latencyUs", &s.latencyUs }, { "latencySigmaUs", &s.latencySigmaUs },
+        { "jitterUs", &s.jitterUs }, { "hotPixelShare", &s.hotPixelShare }, { "hotPixelRateHz", &s.hotPixelRateHz },
+        { "leakRateHz", &s.leakRateHz }, { "rightRowOffset", &s.rightRowOffset }, { "rightRollRad", &s.rightRollRad },
+        { "maxPixelStep", &s.maxPixelStep }
+    };
+    for (const auto& f : fields)
+        if (name == f.first)
+        {
+            *f.second = value;
+            return;
+        }
+    if (name == "seed")
+    {
+        s.seed = (int)value;
+        return;
+    }
+    std::string known;
+    for (const auto& f : fields)
+        known += std::string(known.empty() ? "" : ", ") + f.first;
+    throw std::runtime_error("--sensor-set: no simulator setting \"" + name + "\" (" + known + ", seed)");
+}
 
 // "a=1,b=2" -> the FileStorage lines "a: 1\nb: 2\n".
 std::string parameterSettings(const std::string& list)
@@ -223,6 +253,7 @@ int main(int argc, char** argv)
         o.windowMs = cmd.get<double>("window-ms");
         o.output = cmd.get<std::string>("output");
         o.settings = parameterSettings(cmd.get<std::string>("set"));
+        o.sensorSettings = cmd.get<std::string>("sensor-set");
         if (o.method != "lifetime" && findStereoMode(o.method) < 0)
             throw std::runtime_error("--method=" + o.method + ": available methods: coupled, decoupled, fixed, sgbm, lifetime");
         if (!utils::fs::createDirectories(o.output))
@@ -235,6 +266,20 @@ int main(int argc, char** argv)
         if (o.input.empty())
         {
             sim = StereoEventSimulator::create(o.scene);
+            if (!o.sensorSettings.empty())
+            {
+                SimulatorSettings settings = sim->getSettings();
+                std::stringstream items(o.sensorSettings);
+                std::string kv;
+                while (std::getline(items, kv, ','))
+                {
+                    const size_t eq = kv.find('=');
+                    if (eq == std::string::npos)
+                        throw std::runtime_error("--sensor-set: \"" + kv + "\" is not NAME=VALUE");
+                    applySimulatorSetting(settings, kv.substr(0, eq), std::stod(kv.substr(eq + 1)));
+                }
+                sim = StereoEventSimulator::create(sim->getPlanes(), settings);
+            }
             size = sim->getSensorSize();
         }
         else

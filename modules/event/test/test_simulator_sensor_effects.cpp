@@ -193,6 +193,70 @@ TEST(Event_SimulatorSensor, threshold_mismatch_gives_the_expected_mean_count)
     EXPECT_GT(std::abs(expected - std::floor(C / mu)), 0.3) << "the mismatch must move the mean for this test to mean anything";
 }
 
+TEST(Event_SimulatorSensor, threshold_noise_makes_the_count_a_renewal_process)
+{
+    // A very dark background: the edge's log contrast ln(0.9 / 0.001) = 6.8 spans 34 thresholds of 0.2. With
+    // a fresh N(0.2, 0.05^2) threshold per crossing the count is a renewal process: mean C / mu - 1/2 +
+    // sigma^2 / (2 mu^2) and standard deviation sqrt(C sigma^2 / mu^3); without the noise every pixel fires 34.
+    std::vector<SimulatedPlane> scene = sweepingEdge();
+    scene[0].intensity = 0.001;
+    const double C = std::log(0.9 / 0.001), mu = 0.2, sigma = 0.05;
+    for (double noise : { 0.0, sigma })
+    {
+        SimulatorSettings s = smallSensor();
+        s.thresholdNoise = noise;
+        const PixelTimes times = simulate(scene, s, 500000);
+        double sum = 0, sumSq = 0, n = 0;
+        for (const auto& kv : times)
+            if (std::get<0>(kv.first) == CAMERA_LEFT && std::get<2>(kv.first) >= 30 && std::get<2>(kv.first) < 66)
+            {
+                const double k = (double)kv.second.size();
+                sum += k;
+                sumSq += k * k;
+                n++;
+            }
+        ASSERT_GT(n, 1000);
+        const double mean = sum / n, sd = std::sqrt(std::max(0.0, sumSq / n - mean * mean));
+        if (noise == 0)
+        {
+            EXPECT_EQ(std::floor(C / mu), mean);
+            EXPECT_EQ(0.0, sd);
+            continue;
+        }
+        EXPECT_NEAR(C / mu - 0.5 + sigma * sigma / (2 * mu * mu), mean, 0.3);
+        EXPECT_NEAR(std::sqrt(C * sigma * sigma / (mu * mu * mu)), sd, 0.2 * std::sqrt(C * sigma * sigma / (mu * mu * mu)));
+    }
+}
+
+TEST(Event_SimulatorSensor, lens_blur_fires_an_edge_early_by_the_gaussians_quantile)
+{
+    // Through a Gaussian blur of sigma px a step edge from I0 to I1 reaches a pixel's first level, I0 e^c,
+    // while still sigma * Phi^-1((e^c - 1) I0 / (I1 - I0)) px away: 1.916 sigma for 0.1 -> 0.9 and c = 0.2.
+    // At 80 px/s and sigma = 1 px the first event of every pixel comes 24 ms before the sharp image's.
+    const double v = 80, blur = 1.0, I0 = 0.1, I1 = 0.9, c = 0.2;
+    const double p = (std::exp(c) - 1) * I0 / (I1 - I0);
+    // Phi^-1 by bisection on erfc.
+    double lo = -6, hi = 0;
+    for (int k = 0; k < 60; k++)
+    {
+        const double mid = 0.5 * (lo + hi);
+        (0.5 * std::erfc(-mid / std::sqrt(2.0)) < p ? lo : hi) = mid;
+    }
+    const double expectedLeadUs = -lo * blur / v * 1e6;
+    SimulatorSettings s = smallSensor();
+    const PixelTimes sharp = simulate(sweepingEdge(), s, 500000);
+    s.blurSigmaPx = blur;
+    const PixelTimes blurred = simulate(sweepingEdge(), s, 500000);
+    std::vector<double> lead;
+    for (const auto& kv : sharp)
+        if (std::get<0>(kv.first) == CAMERA_LEFT && std::get<1>(kv.first) >= 4 && std::get<1>(kv.first) < 28 &&
+            std::get<2>(kv.first) >= 30 && std::get<2>(kv.first) < 60 && blurred.count(kv.first))
+            lead.push_back((double)(kv.second[0] - blurred.at(kv.first)[0]));
+    ASSERT_GT(lead.size(), 500u);
+    std::sort(lead.begin(), lead.end());
+    EXPECT_NEAR(expectedLeadUs, lead[lead.size() / 2], 0.1 * expectedLeadUs);
+}
+
 TEST(Event_SimulatorSensor, hot_pixels_and_leak_events_at_their_rates)
 {
     SimulatorSettings s = SimulatorSettings::preset(SENSOR_DAVIS240);

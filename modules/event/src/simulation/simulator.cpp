@@ -9,6 +9,7 @@
 
 #include "precomp.hpp"
 #include "opencv2/calib3d.hpp"
+#include "opencv2/imgproc.hpp"
 
 #include <array>
 #include <cstdio>
@@ -88,6 +89,7 @@ class StereoEventSimulatorImpl CV_FINAL : public StereoEventSimulator
 public:
     StereoEventSimulatorImpl(const std::vector<SimulatedPlane>& planes, const SimulatorSettings& s)
         : planes_(planes), s_(s), rng_((uint64)(s.seed * 7919 + 17)), jitterRng_((uint64)(s.seed * 7919 + 303)),
+          thresholdRng_((uint64)(s.seed * 7919 + 909)),
           hotRng_((uint64)(s.seed * 7919 + 505)), leakRng_((uint64)(s.seed * 7919 + 707))
     {
         if (s.resolution.width <= 0 || s.resolution.height <= 0 || !(s.focalLength > 0) || !(s.baseline > 0))
@@ -96,9 +98,10 @@ public:
             CV_Error(Error::StsBadArg, "StereoEventSimulator: thresholds and step limits must be positive");
         if (!(s.latencyUs >= 0 && s.latencySigmaUs >= 0 && s.jitterUs >= 0 && s.hotPixelShare >= 0 &&
               s.hotPixelShare <= 1 && s.hotPixelRateHz >= 0 && s.leakRateHz >= 0 && s.noiseRateHz >= 0 &&
-              std::abs(s.rightRollRad) < 0.5 && std::abs(s.rightRowOffset) < s.resolution.height))
+              std::abs(s.rightRollRad) < 0.5 && std::abs(s.rightRowOffset) < s.resolution.height &&
+              s.thresholdNoise >= 0 && s.blurSigmaPx >= 0 && s.blurSigmaPx <= 10))
             CV_Error(Error::StsBadArg, "StereoEventSimulator: latencies, jitter, rates and the hot-pixel share must "
-                                       "be >= 0 (share <= 1), the roll below 0.5 rad and the row offset within the image");
+                                       "be >= 0 (share <= 1), the roll below 0.5 rad, the row offset within the image, the blur at most 10 px");
         const int n = s.resolution.area();
         RNG latencyRng((uint64)(s.seed * 7919 + 101)), hotPixelRng((uint64)(s.seed * 7919 + 202));
         for (int c = 0; c < 2; c++)
@@ -321,6 +324,14 @@ private:
                 }
             }
         }
+        if (s_.blurSigmaPx > 0)
+        {
+            // The lens: blur the linear intensity, then back to log (the depth and motion stay the sharp ones).
+            Mat logI(sz, CV_32F, out.logI.data()), linear;
+            exp(logI, linear);
+            GaussianBlur(linear, linear, Size(), s_.blurSigmaPx, s_.blurSigmaPx, BORDER_REPLICATE);
+            log(linear, logI);
+        }
     }
 
     void step()
@@ -368,9 +379,12 @@ private:
                     continue;
                 float& ref = ref_[c][i];
                 const bool up = l1 > l0;
-                const double threshold = up ? cOn_[c][i] : cOff_[c][i];
+                const double pixelThreshold = up ? cOn_[c][i] : cOff_[c][i];
                 for (;;)
                 {
+                    const double threshold = s_.thresholdNoise > 0
+                        ? std::max(0.01, pixelThreshold + s_.thresholdNoise * thresholdRng_.gaussian(1.0))
+                        : pixelThreshold;
                     const double level = up ? ref + threshold : ref - threshold;
                     if (up ? level > l1 : level < l1)
                         break;
@@ -394,12 +408,33 @@ private:
         }
     }
 
-    std::array<float, 6> truth(int c, int x, int y) const
+    std::array<float, 6> truth(int c, int x, int y, bool searchBlur = true) const
     {
         const Size sz = s_.resolution;
         const int i = y * sz.width + x;
         // An edge between two surfaces belongs to the nearer one (it is that surface's contour that moves):
         // take the ground truth from the render, before or after the crossing, that sees the nearer surface.
+        if (s_.blurSigmaPx > 0 && searchBlur)
+        {
+            // Through the lens blur a pixel also fires for an edge up to about 2 sigma away: the nearest
+            // surface within that reach caused it. Its truth is taken from there.
+            const int reach = (int)std::ceil(2 * s_.blurSigmaPx);
+            double best = std::numeric_limits<double>::infinity();
+            int bestIndex = i;
+            for (int yy = std::max(0, y - reach); yy <= std::min(sz.height - 1, y + reach); yy++)
+                for (int xx = std::max(0, x - reach); xx <= std::min(sz.width - 1, x + reach); xx++)
+                    for (const Render* r : { &cur_[c], &next_[c] })
+                    {
+                        const double z = r->depth[yy * sz.width + xx];
+                        if (z > 0 && z < best - 1e-9)
+                        {
+                            best = z;
+                            bestIndex = yy * sz.width + xx;
+                        }
+                    }
+            if (bestIndex != i)
+                return truth(c, bestIndex % sz.width, bestIndex / sz.width, false);
+        }
         const double z0 = cur_[c].depth[i], z1 = next_[c].depth[i];
         const bool before = z0 > 0 && (z1 <= 0 || z0 < z1);
         const Render& r = before ? cur_[c] : next_[c];
@@ -514,7 +549,7 @@ private:
 
     std::vector<SimulatedPlane> planes_;
     SimulatorSettings s_;
-    RNG rng_, jitterRng_, hotRng_, leakRng_;
+    RNG rng_, jitterRng_, thresholdRng_, hotRng_, leakRng_;
     std::vector<float> cOn_[2], cOff_[2], ref_[2], latency_[2];
     std::vector<double> lastEvent_[2];
     std::vector<int64> lastStamp_[2];
@@ -534,6 +569,67 @@ SimulatedPlane texturedPlane(Vec3d center, Vec2d halfSize, Vec3d velocity, doubl
     p.cellSize = cellSize;
     p.textureSeed = seed;
     return p;
+}
+
+SimulatedPlane uniformPlane(Vec3d center, Vec2d halfSize, double intensity, Vec3d velocity = Vec3d(0, 0, 0))
+{
+    SimulatedPlane p;
+    p.center = center;
+    p.halfSize = halfSize;
+    p.texture = TEXTURE_UNIFORM;
+    p.intensity = intensity;
+    p.velocity = velocity;
+    return p;
+}
+
+// A real DAVIS's departures from the ideal sensor, as the realistic scenes use them: thresholds of 0.25 with
+// a 0.05 spread, 0.5 ms refractory period, background activity, a few hot pixels, leak, readout latency and
+// jitter, and a pair rectified to within about a pixel.
+void realSensor(SimulatorSettings& s)
+{
+    s.thresholdOn = s.thresholdOff = 0.25;
+    s.thresholdSigma = 0.05;
+    s.refractoryUs = 500;
+    s.noiseRateHz = 0.1;
+    s.hotPixelShare = 0.0005;
+    s.hotPixelRateHz = 20;
+    s.leakRateHz = 0.02;
+    s.latencyUs = 50;
+    s.latencySigmaUs = 30;
+    s.jitterUs = 30;
+    s.rightRowOffset = 0.5;
+    s.rightRollRad = 0.004;  // with the offset: 0.5 px at one side of a DAVIS240, 1 px at the other
+}
+
+// A person walking across the view at @p depth: torso and head, arms and legs swinging about shoulders and
+// hips in opposite phases, the far-side limbs behind the body, on a plain wall.
+void addWalker(std::vector<SimulatedPlane>& planes, double depth, double speed, double startX)
+{
+    const Vec3d v(speed, 0, 0);
+    const double stride = 0.9;  // steps per second per leg
+    // Far-side limbs first: planes do not need an order, but this reads as the figure is built.
+    for (int side = 0; side < 2; side++)
+    {
+        const double z = depth + (side == 0 ? 0.12 : -0.12);  // side 0 is the far side
+        const double phase = side == 0 ? 0 : CV_PI;
+        SimulatedPlane leg = uniformPlane(Vec3d(startX, 0.45, z), Vec2d(0.07, 0.45), side == 0 ? 0.2 : 0.24, v);
+        leg.swingPivot = Vec2d(0, -0.45);  // the hip
+        leg.swingAmplitude = 0.4;
+        leg.swingFrequency = stride;
+        leg.swingPhase = phase;
+        SimulatedPlane arm = uniformPlane(Vec3d(startX, -0.3, z), Vec2d(0.05, 0.32), side == 0 ? 0.32 : 0.36, v);
+        arm.swingPivot = Vec2d(0, -0.32);  // the shoulder
+        arm.swingAmplitude = 0.35;
+        arm.swingFrequency = stride;
+        arm.swingPhase = phase + CV_PI;    // each arm against its leg
+        planes.push_back(leg);
+        planes.push_back(arm);
+    }
+    SimulatedPlane torso = texturedPlane(Vec3d(startX, -0.27, depth), Vec2d(0.18, 0.3), v, 0.12, 41);
+    torso.intensity = 0.38;
+    torso.contrast = 0.3;
+    planes.push_back(torso);
+    planes.push_back(uniformPlane(Vec3d(startX, -0.72, depth), Vec2d(0.1, 0.12), 0.4, v));  // the head
 }
 
 std::vector<SimulatedPlane> namedScene(const String& name, SimulatorSettings& s)
@@ -584,9 +680,40 @@ std::vector<SimulatedPlane> namedScene(const String& name, SimulatorSettings& s)
         planes.push_back(c);
         s.noiseRateHz = 0.5;
     }
+    else if (name == "boxes" || name == "boxes_fast")
+    {
+        // Two boxes and a pole at three depths (disparity 20, 13 and 8 px) over a plain wall at 5 m (4 px):
+        // few edges, of moderate contrast, with a faint pattern on the near box. boxes_fast moves 2.5 x faster.
+        const double k = name == "boxes" ? 1.0 : 2.5;
+        planes.push_back(uniformPlane(Vec3d(0, 0, 5.0), Vec2d(8, 6), 0.22));
+        SimulatedPlane nearBox = texturedPlane(Vec3d(-0.55, 0.05, 1.0), Vec2d(0.15, 0.13), Vec3d(0.25 * k, 0.02 * k, 0), 0.1, 51);
+        nearBox.intensity = 0.55;
+        nearBox.contrast = 0.25;
+        planes.push_back(nearBox);
+        planes.push_back(uniformPlane(Vec3d(0.9, -0.1, 2.0), Vec2d(0.25, 0.2), 0.45, Vec3d(-0.35 * k, 0, 0)));
+        planes.push_back(uniformPlane(Vec3d(-0.2, 0, 2.5), Vec2d(0.025, 1.5), 0.12, Vec3d(0.15 * k, 0, 0)));
+        realSensor(s);
+    }
+    else if (name == "walking")
+    {
+        // A person walking right at 1.1 m/s, 3 m away (disparity 6.7 px), in front of a plain wall at 6 m (3.3 px).
+        planes.push_back(uniformPlane(Vec3d(0, 0, 6.0), Vec2d(10, 8), 0.5));
+        addWalker(planes, 3.0, 1.1, -1.6);
+        realSensor(s);
+    }
+    else if (name == "low_contrast")
+    {
+        // A faintly textured plane (log contrast up to 0.36, about one threshold) sliding over a plain wall.
+        planes.push_back(uniformPlane(Vec3d(0, 0, 4.0), Vec2d(8, 6), 0.3));
+        SimulatedPlane p = texturedPlane(Vec3d(-0.2, 0, 1.5), Vec2d(0.5, 0.35), Vec3d(0.3, 0, 0), 0.08, 61);
+        p.intensity = 0.5;
+        p.contrast = 0.3;
+        planes.push_back(p);
+        realSensor(s);
+    }
     else
-        CV_Error_(Error::StsBadArg, ("StereoEventSimulator: unknown scene \"%s\" (plane, two_planes, moving_line, faint_line, cluttered)",
-                                     name.c_str()));
+        CV_Error_(Error::StsBadArg, ("StereoEventSimulator: unknown scene \"%s\" (plane, two_planes, moving_line, faint_line, "
+                                     "cluttered, boxes, boxes_fast, walking, low_contrast)", name.c_str()));
     return planes;
 }
 
@@ -594,7 +721,8 @@ std::vector<SimulatedPlane> namedScene(const String& name, SimulatorSettings& s)
 
 std::vector<String> StereoEventSimulator::sceneNames()
 {
-    return std::vector<String>{ "plane", "two_planes", "moving_line", "faint_line", "cluttered" };
+    return std::vector<String>{ "plane", "two_planes", "moving_line", "faint_line", "cluttered",
+                                "boxes", "boxes_fast", "walking", "low_contrast" };
 }
 
 Ptr<StereoEventSimulator> StereoEventSimulator::create(const String& scene, int sensorModel, int seed)

@@ -83,6 +83,11 @@ struct CV_EXPORTS SimulatorSettings
 
     // Sensor non-idealities (all off by default). Each draws from its own random sequence, so turning one on
     // leaves the events the others make unchanged.
+    /** Temporal threshold noise: each crossing's threshold is the pixel's plus a normal draw of this standard
+    deviation (absolute, log intensity), so a pixel does not fire the same way on every edge. */
+    double thresholdNoise = 0;
+    /** Lens blur: a Gaussian of this standard deviation [px] on the image before the sensor (0: sharp). */
+    double blurSigmaPx = 0;
     /** Readout latency: every event is stamped this long after its threshold crossing, plus a per-pixel
     offset drawn once from a normal distribution of standard deviation latencySigmaUs (clipped at 0) [us]. */
     double latencyUs = 0;
