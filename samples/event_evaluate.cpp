@@ -10,7 +10,8 @@
 // edge frames per window + cv::StereoSGBM), with --set for matcher parameters (FileStorage names, e.g.
 // --set=uniquenessRatio=20,costWindow=7); `lifetime` = LifetimeEstimator per camera (lifetime and noise metrics, no disparity).
 //
-// Writes DIR/report.md and DIR/metrics.csv (disparity density, share within 1 px, mean absolute disparity
+// Writes DIR/report.md and DIR/metrics.csv (disparity density, share within 1 px, matching rate (left signal
+// events within 1 px of the truth over all left signal events), mean absolute disparity
 // error, relative depth error, lifetime median relative error, noise precision / recall, events with a
 // lifetime, time per event) and pictures: DIR/disparity_error_histogram.png and DIR/disparity_vs_truth.png.
 
@@ -79,6 +80,8 @@ private:
 struct EvaluationTotals
 {
     int64 events = 0, signal = 0, noise = 0, candidates = 0, estimated = 0, within1 = 0, withLifetime = 0;
+    // The matching rate: left signal events (occluded ones included) whose disparity is within 1 px of the truth.
+    int64 leftSignal = 0, leftMatched = 0;
     int64 withLifetimeCamera[2] = { 0, 0 };
     int64 noiseTrue = 0, noiseFlagged = 0, noiseCorrect = 0;
     double absError = 0, relDepthError = 0;
@@ -353,6 +356,12 @@ int main(int argc, char** argv)
                 if (isNoise)
                     continue;
                 acc.signal++;
+                if (window[i].camera == CAMERA_LEFT)
+                {
+                    acc.leftSignal++;
+                    acc.leftMatched += estimate.hasDisparity && estimate.disparity[i] > 0 &&
+                                       std::abs(estimate.disparity[i] - g[GT_DISPARITY]) <= 1.0;
+                }
                 if (flags & GT_FLAG_OCCLUDED)
                     continue;
                 acc.candidates++;
@@ -377,6 +386,7 @@ int main(int argc, char** argv)
         auto share = [](int64 a, int64 b) { return b > 0 ? 100.0 * (double)a / (double)b : 0.0; };
         const double density = share(acc.estimated, acc.candidates);
         const double within1 = share(acc.within1, acc.estimated);
+        const double matchingRate = share(acc.leftMatched, acc.leftSignal);
         const double mae = acc.estimated ? acc.absError / (double)acc.estimated : 0;
         const double relDepth = acc.estimated ? 100.0 * acc.relDepthError / (double)acc.estimated : 0;
         const double usPerEvent = acc.events ? seconds * 1e6 / (double)acc.events : 0;
@@ -400,6 +410,7 @@ int main(int argc, char** argv)
             << "events_with_disparity," << acc.estimated << "\n"
             << "disparity_density_percent," << density << "\n"
             << "within_1px_percent," << within1 << "\n"
+            << "matching_rate_percent," << matchingRate << "\n"
             << "mean_abs_disparity_error_px," << mae << "\n"
             << "relative_depth_error_percent," << relDepth << "\n"
             << "lifetime_median_relative_error_percent," << lifetimeError << "\n"
@@ -417,6 +428,8 @@ int main(int argc, char** argv)
            << "| events (signal / noise) | " << acc.events << " (" << acc.signal << " / " << acc.noiseTrue << ") |\n"
            << "| disparity density (estimated / non-occluded signal) | " << density << " % (" << acc.estimated << " / " << acc.candidates << ") |\n"
            << "| estimated events within 1 px | " << within1 << " % |\n"
+           << "| matching rate (left signal events within 1 px of the truth / all left signal events) | " << matchingRate
+           << " % (" << acc.leftMatched << " / " << acc.leftSignal << ") |\n"
            << "| mean absolute disparity error | " << mae << " px |\n"
            << "| mean relative depth error | " << relDepth << " % |\n"
            << "| lifetime median relative error | " << lifetimeError << (estimate.hasLifetime ? " %" : " (" + o.method + " estimates no lifetimes)") << " |\n"

@@ -65,7 +65,7 @@ const char* const keys =
     "{no-csv            | false      | do not write events.csv}"
     "{all-frames        | false      | a PNG for every window, not a handful}"
     "{output            | output/event_stereo | output folder}"
-    "{scene             | two_planes | simulated scene when no input is given: plane, two_planes, moving_line, faint_line, cluttered}"
+    "{scene             | boxes      | simulated scene when no input is given: boxes, boxes_fast, walking, low_contrast (realistic); plane, two_planes, moving_line, faint_line, cluttered}"
     "{duration-ms       | 1000       | length of the simulated scene [ms]}";
 
 bool parse(int argc, char** argv, Options& o)

@@ -2,8 +2,9 @@
 # README command 1: install dependencies, build, run the main job; results in output/.
 #   bash scripts/main.sh
 # The main job is event_stereo, per-event stereo disparity, depth and lifetime (COUPLED mode):
-#   1. on the built-in default recording: the simulator's "two_planes" scene (1 s), scored against its
-#      ground truth -> output/simulated: events.csv, disparity_NNNNN.png, disparity.avi, summary.md;
+#   1. on the built-in default recording: the simulator's "boxes" scene (1 s: two boxes and a pole at three
+#      depths over a plain wall, on a real sensor's noise and misalignment), scored against its ground truth
+#      -> output/simulated: events.csv, disparity_NNNNN.png, disparity.avi, summary.md;
 #   2. on the real DVS128 pair ../shared/data/stereo_dvs128_tum/Fan_disp8.dat when it is there
 #      -> output/tum_fan.
 set -euo pipefail
@@ -12,7 +13,7 @@ bash "$repo/scripts/setup.sh"
 bash "$repo/scripts/build.sh" -DOPENCV_EVENT_BUILD_CONTRIB_TEST=OFF
 out="$repo/output"
 mkdir -p "$out"
-"$repo/build/samples/event_stereo" --scene=two_planes --output="$out/simulated"
+"$repo/build/samples/event_stereo" --scene=boxes --output="$out/simulated"
 fan="${OPENCV_EVENT_SHARED_DATA:-$repo/../shared/data}/stereo_dvs128_tum/Fan_disp8.dat"
 if [ -f "$fan" ]; then
   # TUM stereo DVS128: t_us x y p retina, retina 1 = left camera.
