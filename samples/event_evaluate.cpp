@@ -22,6 +22,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include "sample_command_line.hpp"
+#include "sample_matcher_settings.hpp"
 
 #include <array>
 #include <chrono>
@@ -40,7 +41,7 @@ struct Options
 {
     // Defaults: the keys below.
     std::string scene, input, gt, method, output;
-    std::string settings;  // matcher parameters, "key: value" lines (from --set=key=value,...)
+    std::string settings;  // matcher parameters, --set as given
     std::string sensorSettings;  // --sensor-set, as given
     double durationMs = 0, windowMs = 0;
 };
@@ -112,8 +113,7 @@ public:
     Matcher(Size size, int mode, double windowUs, const std::string& settings) : matcher_(StereoEventMatcher::create(size, mode))
     {
         matcher_->setFrameWindow(windowUs);
-        if (!settings.empty())  // "key: value" lines, read as the matcher's own FileStorage parameters
-            matcher_->read(FileStorage("%YAML:1.0\n" + settings, FileStorage::READ | FileStorage::MEMORY).root());
+        applyMatcherSettings(matcher_, settings);
     }
 
     void process(const std::vector<Event>& window, MethodOutput& out) CV_OVERRIDE
@@ -219,23 +219,6 @@ void applySimulatorSetting(SimulatorSettings& s, const std::string& name, double
     throw std::runtime_error("--sensor-set: no simulator setting \"" + name + "\" (" + known + ", seed)");
 }
 
-// "a=1,b=2" -> the FileStorage lines "a: 1\nb: 2\n".
-std::string parameterSettings(const std::string& list)
-{
-    std::string settings;
-    std::stringstream items(list);
-    std::string kv;
-    while (std::getline(items, kv, ','))
-    {
-        if (kv.empty())
-            continue;
-        const size_t eq = kv.find('=');
-        if (eq == std::string::npos || eq == 0)
-            throw std::runtime_error("--set: \"" + kv + "\" is not NAME=VALUE (a StereoEventMatcher parameter)");
-        settings += kv.substr(0, eq) + ": " + kv.substr(eq + 1) + "\n";
-    }
-    return settings;
-}
 
 }  // namespace
 
@@ -255,7 +238,7 @@ int main(int argc, char** argv)
         o.method = cmd.get<std::string>("method");
         o.windowMs = cmd.get<double>("window-ms");
         o.output = cmd.get<std::string>("output");
-        o.settings = parameterSettings(cmd.get<std::string>("set"));
+        o.settings = cmd.get<std::string>("set");
         o.sensorSettings = cmd.get<std::string>("sensor-set");
         if (o.method != "lifetime" && findStereoMode(o.method) < 0)
             throw std::runtime_error("--method=" + o.method + ": available methods: coupled, decoupled, fixed, sgbm, lifetime");

@@ -4,7 +4,8 @@
 //   event_stereo [--input=FILE | --left=FILE --right=FILE | --live] [--calib=FILE] [--sensor=WxH]
 //                [--left-camera-value=0|1] [--mode=coupled|decoupled|fixed|sgbm]
 //                [--min-disparity=PX] [--max-disparity=PX] [--frame-ms=MS] [--threads=N] [--no-csv]
-//                [--all-frames] [--output=DIR] [--scene=NAME --duration-ms=MS]   (no input: simulate, with ground truth)
+//                [--all-frames] [--output=DIR] [--set=NAME=VALUE,...] [--scene=NAME --duration-ms=MS]
+//                (no input: simulate, with ground truth)
 //
 // Writes into DIR: events.csv (t,x,y,p,camera,disparity,depth,lifetime,flags per event, x/y rectified),
 // disparity.avi with one frame per --frame-ms window when a video writer is available (left | right active
@@ -22,6 +23,7 @@
 #include <opencv2/videoio.hpp>
 
 #include "sample_command_line.hpp"
+#include "sample_matcher_settings.hpp"
 #include "sample_progress.hpp"
 
 #include <algorithm>
@@ -39,7 +41,7 @@ namespace {
 struct Options
 {
     // Defaults: the keys below.
-    std::string input, left, right, calib, output, scene, mode;
+    std::string input, left, right, calib, output, scene, mode, settings;
     bool live = false, csv = true, allFrames = false;
     Size sensor;
     int leftCameraValue = 0, minDisparity = 0, maxDisparity = 0;
@@ -66,7 +68,8 @@ const char* const keys =
     "{all-frames        | false      | a PNG for every window, not a handful}"
     "{output            | output/event_stereo | output folder}"
     "{scene             | boxes      | simulated scene when no input is given: boxes, boxes_fast, walking, low_contrast (realistic); plane, two_planes, moving_line, faint_line, cluttered}"
-    "{duration-ms       | 1000       | length of the simulated scene [ms]}";
+    "{duration-ms       | 1000       | length of the simulated scene [ms]}"
+    "{set               |            | matcher parameters NAME=VALUE, comma separated (e.g. uniquenessRatio=20,costWindow=11)}";
 
 bool parse(int argc, char** argv, Options& o)
 {
@@ -95,6 +98,7 @@ bool parse(int argc, char** argv, Options& o)
     o.output = cmd.get<std::string>("output");
     o.scene = cmd.get<std::string>("scene");
     o.durationMs = cmd.get<double>("duration-ms");
+    o.settings = cmd.get<std::string>("set");
     if (findStereoMode(o.mode) < 0)
         throw std::runtime_error("--mode=" + o.mode + ": use coupled, decoupled, fixed or sgbm");
     if ((o.left.empty()) != (o.right.empty()))
@@ -234,6 +238,7 @@ int main(int argc, char** argv)
         matcher->setMinDisparity(opt.minDisparity);
         matcher->setMaxDisparity(opt.maxDisparity);
         matcher->setNumThreads(opt.threads);
+        applyMatcherSettings(matcher, opt.settings);
         if (!opt.calib.empty())
             matcher->loadCalibration(opt.calib);
         else if (source.hasTruth())

@@ -204,7 +204,7 @@ private:
     Size size_;
     int mode_ = STEREO_COUPLED;
     int minDisparity_ = 0, maxDisparity_ = 40;
-    int descriptorWindow_ = 3, maxVectorLength_ = 3, costWindow_ = 9, aggregationWindow_ = 17, uniquenessRatio_ = 15;
+    int descriptorWindow_ = 3, maxVectorLength_ = 3, costWindow_ = 9, aggregationWindow_ = 31, uniquenessRatio_ = 15;
     int64 fixedInterval_ = 10000, frameWindow_ = 33000, maxLifetime_ = 100000;
     double activeDistance_ = 2.5;
     StereoCalibration calibration_;

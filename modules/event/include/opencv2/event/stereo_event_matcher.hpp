@@ -159,7 +159,7 @@ public:
     /** @brief W, the side of the first cost window (odd, default 9). */
     CV_WRAP virtual int getCostWindow() const = 0;
     CV_WRAP virtual void setCostWindow(int w) = 0;
-    /** @brief A, the side of the largest window the iterative aggregation grows to (odd, >= W, default 17). */
+    /** @brief A, the side of the largest window the iterative aggregation grows to (odd, >= W, at most 31, default 31). */
     CV_WRAP virtual int getAggregationWindow() const = 0;
     CV_WRAP virtual void setAggregationWindow(int a) = 0;
     /** @brief Margin [%] by which the best cost must beat every other candidate and "no counterpart" (default 15).
@@ -189,7 +189,7 @@ public:
     An event close enough to a neighbouring band to touch rows that band's events touch waits until that
     band has processed everything before it, so the results are identical to one thread's, bit for bit.
     Bands are at least 2 x (the rows an event reaches each way: half the aggregation window at the
-    defaults) + 1 rows tall, which caps the threads on small sensors (10 on a DAVIS240 at the defaults);
+    defaults) + 1 rows tall, which caps the threads on small sensors (5 on a DAVIS240 at the defaults);
     packets of fewer than 1000 events run on one thread. More threads than the machine's cores is slower: a band
     whose thread is not running holds its neighbours back. processEvent() always runs on the calling thread.
     Not stored by write(). */
