@@ -69,6 +69,21 @@ private:
     std::vector<Event> split_[2];
 };
 
+// Adds a packet (not empty) to the counts and, with --stats, to the statistics.
+void countPacket(Info& info, const std::vector<Event>& packet, CameraStatistics& statistics)
+{
+    for (const Event& e : packet)
+    {
+        info.on += e.p;
+        info.left += e.camera == CAMERA_LEFT;
+    }
+    info.events += (int64)packet.size();
+    if (info.first < 0)
+        info.first = packet.front().t;
+    info.last = packet.back().t;
+    statistics.add(packet, info.size);
+}
+
 Info probe(const std::string& path, Size sensor, bool oneBased, int leftValue, bool withStatistics)
 {
     Info info;
@@ -89,16 +104,7 @@ Info probe(const std::string& path, Size sensor, bool oneBased, int leftValue, b
         std::vector<Event> packet;
         while (cap.read(packet))
         {
-            for (const Event& e : packet)
-            {
-                info.on += e.p;
-                info.left += e.camera == CAMERA_LEFT;
-            }
-            info.events += (int64)packet.size();
-            if (info.first < 0)
-                info.first = packet.front().t;
-            info.last = packet.back().t;
-            statistics.add(packet, info.size);
+            countPacket(info, packet, statistics);
         }
         info.cameras = statistics.result(info.stereo);
         info.rejected = cap.get(EVENT_CAP_PROP_REJECTED_OUTSIDE);
@@ -131,16 +137,7 @@ Info probeScene(const std::string& scene, double durationMs, bool withStatistics
             sim->generate(std::min(t, durationMs * 1000), packet, truth);
             if (packet.empty())
                 continue;
-            for (const Event& e : packet)
-            {
-                info.on += e.p;
-                info.left += e.camera == CAMERA_LEFT;
-            }
-            info.events += (int64)packet.size();
-            if (info.first < 0)
-                info.first = packet.front().t;
-            info.last = packet.back().t;
-            statistics.add(packet, info.size);
+            countPacket(info, packet, statistics);
         }
         info.cameras = statistics.result(true);
     }

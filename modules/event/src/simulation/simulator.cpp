@@ -560,12 +560,18 @@ private:
     std::vector<SimulatedEvent> pending_;  // simulated, not yet handed out; in stream order
 };
 
-SimulatedPlane texturedPlane(Vec3d center, Vec2d halfSize, Vec3d velocity, double cellSize, int seed)
+SimulatedPlane movingPlane(Vec3d center, Vec2d halfSize, Vec3d velocity)
 {
     SimulatedPlane p;
     p.center = center;
     p.halfSize = halfSize;
     p.velocity = velocity;
+    return p;
+}
+
+SimulatedPlane texturedPlane(Vec3d center, Vec2d halfSize, Vec3d velocity, double cellSize, int seed)
+{
+    SimulatedPlane p = movingPlane(center, halfSize, velocity);
     p.cellSize = cellSize;
     p.textureSeed = seed;
     return p;
@@ -573,12 +579,9 @@ SimulatedPlane texturedPlane(Vec3d center, Vec2d halfSize, Vec3d velocity, doubl
 
 SimulatedPlane uniformPlane(Vec3d center, Vec2d halfSize, double intensity, Vec3d velocity = Vec3d(0, 0, 0))
 {
-    SimulatedPlane p;
-    p.center = center;
-    p.halfSize = halfSize;
+    SimulatedPlane p = movingPlane(center, halfSize, velocity);
     p.texture = TEXTURE_UNIFORM;
     p.intensity = intensity;
-    p.velocity = velocity;
     return p;
 }
 
