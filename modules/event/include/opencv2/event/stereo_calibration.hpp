@@ -80,6 +80,26 @@ CV_EXPORTS_W StereoCalibration readStereoCalibration(const String& path);
 /** @brief Writes @p calibration to an OpenCV FileStorage file that readStereoCalibration() reads back. */
 CV_EXPORTS_W void writeStereoCalibration(const String& path, const StereoCalibration& calibration);
 
+/** @brief How far a stereo pair's rows are off, measured from its events: (row offset [px] at the image
+centre, roll [rad]). Zero for a well rectified pair.
+
+The events of each camera are counted per pixel; three vertical strips of the left image (left, middle and
+right third) are each matched against the right image over disparities [minDisparity, maxDisparity] and row
+shifts of up to 4 px by normalised correlation, the row shift refined to sub-pixel by a parabola; a line through
+the three shifts over the strips' centres gives the offset at the centre and the roll. Positive: the right
+camera sees a point lower (larger y) than the left one does, and more so to the right for a positive roll.
+Give it the events of a stretch with motion in more than one direction (horizontal edges carry the row
+information), already rectified when a calibration exists; a second or two of a typical recording is enough.
+@param events stereo events (camera column), any form getEventMat() accepts; events outside the sensor are
+ignored.
+@param sensorSize the sensor size.
+@param minDisparity, maxDisparity the disparity range searched.
+@param score optional output: the smallest of the three strips' best correlations (0..1); below about 0.4 the
+events do not say much, and the estimate should not be trusted.
+*/
+CV_EXPORTS_W Vec2d estimateRowAlignment(InputArray events, Size sensorSize, int minDisparity = 0, int maxDisparity = 40,
+                                        CV_OUT double* score = 0);
+
 //! @}
 
 }  // namespace event
