@@ -1,0 +1,188 @@
+// This file is part of OpenCV project.
+// It is subject to the license terms in the LICENSE file found in the top-level directory
+// of this distribution and at http://opencv.org/license.html.
+
+// The simulator's named scenes: the planes, their motion and the sensor settings each scene brings.
+
+#include "precomp.hpp"
+#include "simulation/simulated_scenes.hpp"
+
+namespace cv {
+namespace event {
+namespace detail {
+namespace {
+
+SimulatedPlane movingPlane(Vec3d center, Vec2d halfSize, Vec3d velocity)
+{
+    SimulatedPlane p;
+    p.center = center;
+    p.halfSize = halfSize;
+    p.velocity = velocity;
+    return p;
+}
+
+SimulatedPlane texturedPlane(Vec3d center, Vec2d halfSize, Vec3d velocity, double cellSize, int seed)
+{
+    SimulatedPlane p = movingPlane(center, halfSize, velocity);
+    p.cellSize = cellSize;
+    p.textureSeed = seed;
+    return p;
+}
+
+SimulatedPlane uniformPlane(Vec3d center, Vec2d halfSize, double intensity, Vec3d velocity = Vec3d(0, 0, 0))
+{
+    SimulatedPlane p = movingPlane(center, halfSize, velocity);
+    p.texture = TEXTURE_UNIFORM;
+    p.intensity = intensity;
+    return p;
+}
+
+// A real DAVIS's departures from the ideal sensor, as the realistic scenes use them: thresholds of 0.25 with
+// a 0.05 spread, 0.5 ms refractory period, background activity, a few hot pixels, leak, readout latency and
+// jitter, and a pair rectified to within about a pixel.
+void realSensor(SimulatorSettings& s)
+{
+    s.thresholdOn = s.thresholdOff = 0.25;
+    s.thresholdSigma = 0.05;
+    s.refractoryUs = 500;
+    s.noiseRateHz = 0.1;
+    s.hotPixelShare = 0.0005;
+    s.hotPixelRateHz = 20;
+    s.leakRateHz = 0.02;
+    s.latencyUs = 50;
+    s.latencySigmaUs = 30;
+    s.jitterUs = 30;
+    s.rightRowOffset = 0.5;
+    s.rightRollRad = 0.004;  // with the offset: 0.5 px at one side of a DAVIS240, 1 px at the other
+}
+
+// A person walking across the view at @p depth: torso and head, arms and legs swinging about shoulders and
+// hips in opposite phases, the far-side limbs behind the body, on a plain wall.
+void addWalker(std::vector<SimulatedPlane>& planes, double depth, double speed, double startX)
+{
+    const Vec3d v(speed, 0, 0);
+    const double stride = 0.9;  // steps per second per leg
+    // Far-side limbs first: planes do not need an order, but this reads as the figure is built.
+    for (int side = 0; side < 2; side++)
+    {
+        const double z = depth + (side == 0 ? 0.12 : -0.12);  // side 0 is the far side
+        const double phase = side == 0 ? 0 : CV_PI;
+        SimulatedPlane leg = uniformPlane(Vec3d(startX, 0.45, z), Vec2d(0.07, 0.45), side == 0 ? 0.2 : 0.24, v);
+        leg.swingPivot = Vec2d(0, -0.45);  // the hip
+        leg.swingAmplitude = 0.4;
+        leg.swingFrequency = stride;
+        leg.swingPhase = phase;
+        SimulatedPlane arm = uniformPlane(Vec3d(startX, -0.3, z), Vec2d(0.05, 0.32), side == 0 ? 0.32 : 0.36, v);
+        arm.swingPivot = Vec2d(0, -0.32);  // the shoulder
+        arm.swingAmplitude = 0.35;
+        arm.swingFrequency = stride;
+        arm.swingPhase = phase + CV_PI;    // each arm against its leg
+        planes.push_back(leg);
+        planes.push_back(arm);
+    }
+    SimulatedPlane torso = texturedPlane(Vec3d(startX, -0.27, depth), Vec2d(0.18, 0.3), v, 0.12, 41);
+    torso.intensity = 0.38;
+    torso.contrast = 0.3;
+    planes.push_back(torso);
+    planes.push_back(uniformPlane(Vec3d(startX, -0.72, depth), Vec2d(0.1, 0.12), 0.4, v));  // the head
+}
+
+}  // namespace
+
+std::vector<SimulatedPlane> simulatedScene(const String& name, SimulatorSettings& s)
+{
+    std::vector<SimulatedPlane> planes;
+    if (name == "plane")
+    {
+        // Fills the view at 1 m and slides right at 0.5 m/s: 100 px/s at f = 200 px, disparity 20 px.
+        planes.push_back(texturedPlane(Vec3d(0, 0, 1.0), Vec2d(3, 3), Vec3d(0.5, 0, 0), 0.06, 11));
+    }
+    else if (name == "two_planes")
+    {
+        planes.push_back(texturedPlane(Vec3d(0, 0, 2.0), Vec2d(5, 5), Vec3d(-0.2, 0, 0), 0.12, 21));
+        planes.push_back(texturedPlane(Vec3d(-0.6, 0, 1.0), Vec2d(0.25, 0.3), Vec3d(0.6, 0, 0), 0.05, 22));
+    }
+    else if (name == "moving_line" || name == "faint_line")
+    {
+        // A thin line over a dark background; the right sensor is 1.6 x less sensitive. moving_line's line is
+        // bright (log contrast ln 9 = 2.2), so both sensors fire full edges. faint_line's has log contrast
+        // ln(0.1375 / 0.1) = 0.32, the right sensor's mean threshold (1.6 x 0.2): with the per-pixel mismatch
+        // the weak sensor fires at only part of the line's pixels (the paper's Figure 4 case).
+        SimulatedPlane back;
+        back.center = Vec3d(0, 0, 1.5);
+        back.halfSize = Vec2d(5, 5);
+        back.texture = TEXTURE_UNIFORM;
+        back.intensity = 0.1;
+        SimulatedPlane line = back;
+        line.center = Vec3d(-0.5, 0, 1.2);
+        line.halfSize = Vec2d(0.012, 0.35);
+        line.intensity = name == "moving_line" ? 0.9 : 0.1375;
+        line.velocity = Vec3d(0.45, 0, 0);
+        planes.push_back(back);
+        planes.push_back(line);
+        s.rightThresholdScale = 1.6;
+    }
+    else if (name == "cluttered")
+    {
+        planes.push_back(texturedPlane(Vec3d(0, 0, 3.0), Vec2d(6, 6), Vec3d(0.1, 0.05, 0), 0.15, 31));
+        SimulatedPlane a = texturedPlane(Vec3d(-0.4, -0.2, 1.2), Vec2d(0.2, 0.15), Vec3d(0.3, 0.05, 0), 0.04, 32);
+        a.angularVelocity = Vec3d(0, 0, 0.8);
+        SimulatedPlane b = texturedPlane(Vec3d(0.3, 0.25, 1.8), Vec2d(0.3, 0.2), Vec3d(-0.25, 0, 0), 0.06, 33);
+        b.rotation = Vec3d(0, 0.3, 0);
+        b.angularVelocity = Vec3d(0, 0.3, 0);
+        SimulatedPlane c = texturedPlane(Vec3d(0.1, -0.4, 2.4), Vec2d(0.25, 0.1), Vec3d(0.15, 0.1, 0), 0.05, 34);
+        c.angularVelocity = Vec3d(0.2, 0, -0.5);
+        planes.push_back(a);
+        planes.push_back(b);
+        planes.push_back(c);
+        s.noiseRateHz = 0.5;
+    }
+    else if (name == "boxes" || name == "boxes_fast")
+    {
+        // Two boxes and a pole at three depths (disparity 20, 10 and 8 px) over a plain wall at 5 m (4 px):
+        // few edges, of moderate contrast, with a faint pattern on the near box. The boxes move diagonally, so
+        // that their horizontal edges fire too (the ones a row search finds hardest). boxes_fast moves 2.5 x
+        // faster.
+        const double k = name == "boxes" ? 1.0 : 2.5;
+        planes.push_back(uniformPlane(Vec3d(0, 0, 5.0), Vec2d(8, 6), 0.22));
+        SimulatedPlane nearBox = texturedPlane(Vec3d(-0.55, 0.05, 1.0), Vec2d(0.15, 0.13), Vec3d(0.25 * k, 0.1 * k, 0), 0.1, 51);
+        nearBox.intensity = 0.55;
+        nearBox.contrast = 0.25;
+        planes.push_back(nearBox);
+        planes.push_back(uniformPlane(Vec3d(0.9, 0.1, 2.0), Vec2d(0.25, 0.2), 0.45, Vec3d(-0.35 * k, -0.15 * k, 0)));
+        planes.push_back(uniformPlane(Vec3d(-0.2, 0, 2.5), Vec2d(0.025, 1.5), 0.12, Vec3d(0.15 * k, 0, 0)));
+        realSensor(s);
+    }
+    else if (name == "walking")
+    {
+        // A person walking right at 1.1 m/s, 3 m away (disparity 6.7 px), in front of a plain wall at 6 m (3.3 px).
+        planes.push_back(uniformPlane(Vec3d(0, 0, 6.0), Vec2d(10, 8), 0.5));
+        addWalker(planes, 3.0, 1.1, -1.6);
+        realSensor(s);
+    }
+    else if (name == "low_contrast")
+    {
+        // A faintly textured plane (log contrast up to 0.36, about one threshold) sliding over a plain wall.
+        planes.push_back(uniformPlane(Vec3d(0, 0, 4.0), Vec2d(8, 6), 0.3));
+        SimulatedPlane p = texturedPlane(Vec3d(-0.2, 0, 1.5), Vec2d(0.5, 0.35), Vec3d(0.3, 0, 0), 0.08, 61);
+        p.intensity = 0.5;
+        p.contrast = 0.3;
+        planes.push_back(p);
+        realSensor(s);
+    }
+    else
+        CV_Error_(Error::StsBadArg, ("StereoEventSimulator: unknown scene \"%s\" (plane, two_planes, moving_line, faint_line, "
+                                     "cluttered, boxes, boxes_fast, walking, low_contrast)", name.c_str()));
+    return planes;
+}
+
+
+std::vector<String> simulatedSceneNames()
+{
+    return std::vector<String>{ "plane", "two_planes", "moving_line", "faint_line", "cluttered",
+                                "boxes", "boxes_fast", "walking", "low_contrast" };
+}
+
+}  // namespace detail
+}  // namespace event
+}  // namespace cv
