@@ -30,7 +30,6 @@
 #include <cstdio>
 #include <fstream>
 #include <iostream>
-#include <sstream>
 
 using namespace cv;
 using namespace cv::event;
@@ -219,7 +218,6 @@ void applySimulatorSetting(SimulatorSettings& s, const std::string& name, double
     throw std::runtime_error("--sensor-set: no simulator setting \"" + name + "\" (" + known + ", seed)");
 }
 
-
 }  // namespace
 
 int main(int argc, char** argv)
@@ -255,15 +253,8 @@ int main(int argc, char** argv)
             if (!o.sensorSettings.empty())
             {
                 SimulatorSettings settings = sim->getSettings();
-                std::stringstream items(o.sensorSettings);
-                std::string kv;
-                while (std::getline(items, kv, ','))
-                {
-                    const size_t eq = kv.find('=');
-                    if (eq == std::string::npos)
-                        throw std::runtime_error("--sensor-set: \"" + kv + "\" is not NAME=VALUE");
-                    applySimulatorSetting(settings, kv.substr(0, eq), std::stod(kv.substr(eq + 1)));
-                }
+                for (const std::pair<std::string, std::string>& item : parseNameValueList("--sensor-set", o.sensorSettings))
+                    applySimulatorSetting(settings, item.first, std::stod(item.second));
                 sim = StereoEventSimulator::create(sim->getPlanes(), settings);
             }
             size = sim->getSensorSize();

@@ -15,9 +15,32 @@
 
 #include <iostream>
 #include <map>
+#include <set>
+#include <sstream>
+#include <utility>
 #include <stdexcept>
 #include <string>
 #include <vector>
+
+/** "a=1,b=2" -> {(a, 1), (b, 2)}: the value of list options such as --set. Empty items are skipped; an item
+    that is not NAME=VALUE throws std::runtime_error naming @p option. */
+inline std::vector<std::pair<std::string, std::string>> parseNameValueList(const std::string& option,
+                                                                           const std::string& list)
+{
+    std::vector<std::pair<std::string, std::string>> out;
+    std::stringstream items(list);
+    std::string item;
+    while (std::getline(items, item, ','))
+    {
+        if (item.empty())
+            continue;
+        const size_t eq = item.find('=');
+        if (eq == std::string::npos || eq == 0)
+            throw std::runtime_error(option + ": \"" + item + "\" is not NAME=VALUE");
+        out.push_back(std::make_pair(item.substr(0, eq), item.substr(eq + 1)));
+    }
+    return out;
+}
 
 class SampleCommandLine
 {
@@ -97,7 +120,7 @@ private:
                     primary = name;
                 primaryOf_[name] = primary;
                 if (defaultValue == "false" || name == "help" || name == "h")
-                    switches_[name] = true;
+                    switches_.insert(name);
             }
         }
     }
@@ -118,7 +141,7 @@ private:
         const auto known = primaryOf_.find(name);
         if (known == primaryOf_.end())
             throw std::runtime_error("unknown option " + a + " (--help lists them)");
-        given_[known->second] = true;
+        given_.insert(known->second);
         if (switches_.count(name))
         {
             if (eq != std::string::npos && body.substr(eq + 1) != "true" && body.substr(eq + 1) != "false")
@@ -143,7 +166,7 @@ private:
 
     cv::CommandLineParser parser_;
     std::map<std::string, std::string> primaryOf_;
-    std::map<std::string, bool> switches_, given_;
+    std::set<std::string> switches_, given_;  // switch names (aliases too); primary names given
     std::vector<std::string> positionals_;
     int declaredPositionals_ = 0;
 };

@@ -6,8 +6,9 @@
 
 #include <opencv2/event.hpp>
 
+#include "sample_command_line.hpp"
+
 #include <set>
-#include <sstream>
 #include <stdexcept>
 #include <string>
 
@@ -24,24 +25,17 @@ inline void applyMatcherSettings(const cv::Ptr<cv::event::StereoEventMatcher>& m
     std::set<std::string> known;
     for (const cv::FileNode& n : stored.root())
         known.insert(n.name());
-    std::string yaml = "%YAML:1.0\n", item;
-    std::stringstream items(list);
-    while (std::getline(items, item, ','))
+    std::string yaml = "%YAML:1.0\n";
+    for (const std::pair<std::string, std::string>& item : parseNameValueList("--set", list))
     {
-        if (item.empty())
-            continue;
-        const size_t eq = item.find('=');
-        if (eq == std::string::npos || eq == 0)
-            throw std::runtime_error("--set: \"" + item + "\" is not NAME=VALUE");
-        const std::string name = item.substr(0, eq);
-        if (!known.count(name))
+        if (!known.count(item.first))
         {
             std::string names;
             for (const std::string& k : known)
                 names += (names.empty() ? "" : ", ") + k;
-            throw std::runtime_error("--set: the matcher has no parameter \"" + name + "\" (" + names + ")");
+            throw std::runtime_error("--set: the matcher has no parameter \"" + item.first + "\" (" + names + ")");
         }
-        yaml += name + ": " + item.substr(eq + 1) + "\n";
+        yaml += item.first + ": " + item.second + "\n";
     }
     matcher->read(cv::FileStorage(yaml, cv::FileStorage::READ | cv::FileStorage::MEMORY).root());
 }

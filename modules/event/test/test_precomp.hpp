@@ -9,6 +9,7 @@
 #include "opencv2/event.hpp"
 #include "test_common.hpp"
 #include "test_event_helpers.hpp"
+#include "test_simulator_helpers.hpp"
 
 #include <cstdio>
 #include <map>

@@ -6,30 +6,10 @@
 
 namespace opencv_test { namespace {
 
-// A bright uniform plane whose right edge sweeps over a dark uniform background: one straight vertical edge
-// moving right at f * speed / depth px/s.
+// The edge starts a quarter of its depth left of the optical axis.
 std::vector<SimulatedPlane> edgeScene(double depth, double speed)
 {
-    SimulatedPlane back;
-    back.center = Vec3d(0, 0, 2 * depth);
-    back.halfSize = Vec2d(10, 10);
-    back.texture = TEXTURE_UNIFORM;
-    back.intensity = 0.1;
-    SimulatedPlane front = back;
-    front.center = Vec3d(-1.0 - 0.25 * depth, 0, depth);  // right edge starts left of the image centre
-    front.halfSize = Vec2d(1.0, 10);
-    front.intensity = 0.9;
-    front.velocity = Vec3d(speed, 0, 0);
-    return { back, front };
-}
-
-SimulatorSettings exactSettings()
-{
-    SimulatorSettings s;
-    s.resolution = Size(96, 32);
-    s.thresholdSigma = 0;   // every pixel has the nominal threshold
-    s.refractoryUs = 0;     // count every crossing
-    return s;
+    return sweepingEdgeScene(depth, speed, -0.25 * depth);
 }
 
 TEST(Event_Simulator, fronto_parallel_plane_disparity_is_fB_over_Z_and_seen_shifted_in_the_right_camera)
@@ -76,7 +56,7 @@ TEST(Event_Simulator, moving_edge_lifetime_is_one_over_its_speed_and_counts_foll
     const double pxPerSecond = 200 * speed / depth;
     for (double threshold : { 0.2, 0.4 })
     {
-        SimulatorSettings s = exactSettings();
+        SimulatorSettings s = idealSmallSensor();
         s.thresholdOn = s.thresholdOff = threshold;
         Ptr<StereoEventSimulator> sim = StereoEventSimulator::create(edgeScene(depth, speed), s);
         std::vector<Event> ev;
@@ -150,7 +130,7 @@ TEST(Event_Simulator, deterministic_per_seed_and_independent_of_chunking)
 
 TEST(Event_Simulator, background_activity_rate_and_flags)
 {
-    SimulatorSettings s = exactSettings();
+    SimulatorSettings s = idealSmallSensor();
     s.noiseRateHz = 20;
     std::vector<SimulatedPlane> still = edgeScene(1.0, 0.0);  // nothing moves: only noise
     Ptr<StereoEventSimulator> sim = StereoEventSimulator::create(still, s);

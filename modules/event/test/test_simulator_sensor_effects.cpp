@@ -8,20 +8,10 @@
 
 namespace opencv_test { namespace {
 
-// A bright uniform plane whose right edge sweeps right over a dark background (log contrast ln 9 = 2.197).
+// The edge at 80 px/s (f = 200 px), starting 20 px left of the image centre.
 std::vector<SimulatedPlane> sweepingEdge()
 {
-    SimulatedPlane back;
-    back.center = Vec3d(0, 0, 2);
-    back.halfSize = Vec2d(10, 10);
-    back.texture = TEXTURE_UNIFORM;
-    back.intensity = 0.1;
-    SimulatedPlane front = back;
-    front.center = Vec3d(-1.1, 0, 1);   // the edge starts 20 px left of the centre
-    front.halfSize = Vec2d(1.0, 10);
-    front.intensity = 0.9;
-    front.velocity = Vec3d(0.4, 0, 0);  // 80 px/s at f = 200 px
-    return { back, front };
+    return sweepingEdgeScene(1.0, 0.4, -0.1);
 }
 
 // A scene where nothing moves: every event is the sensor's own.
@@ -33,15 +23,6 @@ std::vector<SimulatedPlane> staticScene()
     back.texture = TEXTURE_UNIFORM;
     back.intensity = 0.3;
     return { back };
-}
-
-SimulatorSettings smallSensor()
-{
-    SimulatorSettings s;
-    s.resolution = Size(96, 32);
-    s.thresholdSigma = 0;
-    s.refractoryUs = 0;
-    return s;
 }
 
 typedef std::map<std::tuple<int, int, int>, std::vector<int64>> PixelTimes;  // (camera, y, x) -> stamps
@@ -57,7 +38,9 @@ PixelTimes simulate(const std::vector<SimulatedPlane>& scene, const SimulatorSet
     for (size_t i = 0; i < ev.size(); i++)
     {
         if (i > 0)
+        {
             EXPECT_LE(ev[i - 1].t, ev[i].t) << "the stream is in time order, event " << i;
+        }
         out[std::make_tuple((int)ev[i].camera, (int)ev[i].y, (int)ev[i].x)].push_back(ev[i].t);
     }
     if (truth)
@@ -71,7 +54,7 @@ PixelTimes simulate(const std::vector<SimulatedPlane>& scene, const SimulatorSet
 // from their own random sequences), the first events of each pixel up to the undelayed run's count.
 std::vector<std::pair<double, std::tuple<int, int, int>>> delays(const SimulatorSettings& delayed, double untilUs)
 {
-    const PixelTimes base = simulate(sweepingEdge(), smallSensor(), untilUs);
+    const PixelTimes base = simulate(sweepingEdge(), idealSmallSensor(), untilUs);
     const PixelTimes late = simulate(sweepingEdge(), delayed, untilUs + 20000);
     std::vector<std::pair<double, std::tuple<int, int, int>>> out;
     for (const auto& kv : base)
@@ -89,7 +72,7 @@ std::vector<std::pair<double, std::tuple<int, int, int>>> delays(const Simulator
 
 TEST(Event_SimulatorSensor, latency_is_a_fixed_delay_per_pixel_with_the_set_mean_and_spread)
 {
-    SimulatorSettings s = smallSensor();
+    SimulatorSettings s = idealSmallSensor();
     s.latencyUs = 500;
     s.latencySigmaUs = 150;
     const auto d = delays(s, 500000);
@@ -122,11 +105,11 @@ TEST(Event_SimulatorSensor, latency_is_a_fixed_delay_per_pixel_with_the_set_mean
 
 TEST(Event_SimulatorSensor, jitter_is_an_exponential_delay_per_event)
 {
-    SimulatorSettings s = smallSensor();
+    SimulatorSettings s = idealSmallSensor();
     s.jitterUs = 300;
     // One event per pixel and crossing (threshold above half the contrast): no two of a pixel's events
     // close enough for the order rule to move one.
-    SimulatorSettings base = smallSensor();
+    SimulatorSettings base = idealSmallSensor();
     s.thresholdOn = s.thresholdOff = base.thresholdOn = base.thresholdOff = 2.0;
     const PixelTimes ideal = simulate(sweepingEdge(), base, 500000);
     const PixelTimes late = simulate(sweepingEdge(), s, 520000);
@@ -151,7 +134,7 @@ TEST(Event_SimulatorSensor, refractory_period_spaces_a_pixels_events)
 {
     // The edge's 10 levels are crossed within one render step (about 3 ms): without a refractory period a
     // pixel fires all 10; with 1 ms at most one per millisecond.
-    SimulatorSettings s = smallSensor();
+    SimulatorSettings s = idealSmallSensor();
     s.refractoryUs = 1000;
     const PixelTimes times = simulate(sweepingEdge(), s, 500000);
     ASSERT_GT(times.size(), 1000u);
@@ -162,7 +145,7 @@ TEST(Event_SimulatorSensor, refractory_period_spaces_a_pixels_events)
             EXPECT_GE(kv.second[k] - kv.second[k - 1], 999) << "pixel events closer than the refractory period";
         events += kv.second.size();
     }
-    const PixelTimes free = simulate(sweepingEdge(), smallSensor(), 500000);
+    const PixelTimes free = simulate(sweepingEdge(), idealSmallSensor(), 500000);
     size_t freeEvents = 0;
     for (const auto& kv : free)
         freeEvents += kv.second.size();
@@ -178,7 +161,7 @@ TEST(Event_SimulatorSensor, threshold_mismatch_gives_the_expected_mean_count)
     double expected = 0;
     for (int k = 1; k < 200; k++)
         expected += k * (Phi(C / k) - Phi(C / (k + 1)));
-    SimulatorSettings s = smallSensor();
+    SimulatorSettings s = idealSmallSensor();
     s.thresholdSigma = sigma;
     const PixelTimes times = simulate(sweepingEdge(), s, 500000);
     double sum = 0, n = 0;
@@ -203,7 +186,7 @@ TEST(Event_SimulatorSensor, threshold_noise_makes_the_count_a_renewal_process)
     const double C = std::log(0.9 / 0.001), mu = 0.2, sigma = 0.05;
     for (double noise : { 0.0, sigma })
     {
-        SimulatorSettings s = smallSensor();
+        SimulatorSettings s = idealSmallSensor();
         s.thresholdNoise = noise;
         const PixelTimes times = simulate(scene, s, 500000);
         double sum = 0, sumSq = 0, n = 0;
@@ -243,7 +226,7 @@ TEST(Event_SimulatorSensor, lens_blur_fires_an_edge_early_by_the_gaussians_quant
         (0.5 * std::erfc(-mid / std::sqrt(2.0)) < p ? lo : hi) = mid;
     }
     const double expectedLeadUs = -lo * blur / v * 1e6;
-    SimulatorSettings s = smallSensor();
+    SimulatorSettings s = idealSmallSensor();
     const PixelTimes sharp = simulate(sweepingEdge(), s, 500000);
     s.blurSigmaPx = blur;
     const PixelTimes blurred = simulate(sweepingEdge(), s, 500000);
@@ -393,7 +376,7 @@ TEST(Event_SimulatorSensor, swinging_plane_moves_as_its_pivot_and_swing_rate_say
     bar.swingPivot = Vec2d(0, -0.2);   // the top end, at (0, -0.1, 1)
     bar.swingAmplitude = 0.3;
     bar.swingFrequency = 1.0;
-    SimulatorSettings s = smallSensor();
+    SimulatorSettings s = idealSmallSensor();
     s.resolution = Size(160, 120);
     Ptr<StereoEventSimulator> sim = StereoEventSimulator::create({ back, bar }, s);
     std::vector<Event> ev;
@@ -422,7 +405,7 @@ TEST(Event_SimulatorSensor, swinging_plane_moves_as_its_pivot_and_swing_rate_say
 
 TEST(Event_SimulatorSensor, every_effect_on_streams_alike_in_any_chunks)
 {
-    SimulatorSettings s = smallSensor();
+    SimulatorSettings s = idealSmallSensor();
     s.latencyUs = 300;
     s.latencySigmaUs = 200;
     s.jitterUs = 150;

@@ -108,18 +108,9 @@ std::vector<SimulatedPlane> simulatedScene(const String& name, SimulatorSettings
         // bright (log contrast ln 9 = 2.2), so both sensors fire full edges. faint_line's has log contrast
         // ln(0.1375 / 0.1) = 0.32, the right sensor's mean threshold (1.6 x 0.2): with the per-pixel mismatch
         // the weak sensor fires at only part of the line's pixels (the paper's Figure 4 case).
-        SimulatedPlane back;
-        back.center = Vec3d(0, 0, 1.5);
-        back.halfSize = Vec2d(5, 5);
-        back.texture = TEXTURE_UNIFORM;
-        back.intensity = 0.1;
-        SimulatedPlane line = back;
-        line.center = Vec3d(-0.5, 0, 1.2);
-        line.halfSize = Vec2d(0.012, 0.35);
-        line.intensity = name == "moving_line" ? 0.9 : 0.1375;
-        line.velocity = Vec3d(0.45, 0, 0);
-        planes.push_back(back);
-        planes.push_back(line);
+        planes.push_back(uniformPlane(Vec3d(0, 0, 1.5), Vec2d(5, 5), 0.1));
+        planes.push_back(uniformPlane(Vec3d(-0.5, 0, 1.2), Vec2d(0.012, 0.35), name == "moving_line" ? 0.9 : 0.1375,
+                                      Vec3d(0.45, 0, 0)));
         s.rightThresholdScale = 1.6;
     }
     else if (name == "cluttered")
@@ -171,11 +162,14 @@ std::vector<SimulatedPlane> simulatedScene(const String& name, SimulatorSettings
         realSensor(s);
     }
     else
-        CV_Error_(Error::StsBadArg, ("StereoEventSimulator: unknown scene \"%s\" (plane, two_planes, moving_line, faint_line, "
-                                     "cluttered, boxes, boxes_fast, walking, low_contrast)", name.c_str()));
+    {
+        String known;
+        for (const String& n : simulatedSceneNames())
+            known += (known.empty() ? "" : ", ") + n;
+        CV_Error_(Error::StsBadArg, ("StereoEventSimulator: unknown scene \"%s\" (%s)", name.c_str(), known.c_str()));
+    }
     return planes;
 }
-
 
 std::vector<String> simulatedSceneNames()
 {

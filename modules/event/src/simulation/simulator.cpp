@@ -105,6 +105,7 @@ public:
                                        "be >= 0 (share <= 1), the roll below 0.5 rad, the row offset within the image, the blur at most 10 px");
         const int n = s.resolution.area();
         RNG latencyRng((uint64)(s.seed * 7919 + 101)), hotPixelRng((uint64)(s.seed * 7919 + 202));
+        delayed_ = s.latencyUs > 0 || s.latencySigmaUs > 0 || s.jitterUs > 0;
         for (int c = 0; c < 2; c++)
         {
             const double scale = c == CAMERA_RIGHT ? s.rightThresholdScale : 1.0;
@@ -116,10 +117,9 @@ public:
                 cOff_[c][i] = (float)std::max(0.01, scale * (s.thresholdOff + s.thresholdSigma * rng_.gaussian(1.0)));
             }
             lastEvent_[c].assign(n, -1e18);
-            lastStamp_[c].assign(n, std::numeric_limits<int64>::min());
-            delayed_ = s.latencyUs > 0 || s.latencySigmaUs > 0 || s.jitterUs > 0;
             if (delayed_)
             {
+                lastStamp_[c].assign(n, std::numeric_limits<int64>::min());
                 latency_[c].resize(n);
                 for (int i = 0; i < n; i++)
                     latency_[c][i] = (float)std::max(0.0, s.latencyUs + s.latencySigmaUs * latencyRng.gaussian(1.0));
@@ -553,7 +553,7 @@ private:
     RNG rng_, jitterRng_, thresholdRng_, hotRng_, leakRng_;
     std::vector<float> cOn_[2], cOff_[2], ref_[2], latency_[2];
     std::vector<double> lastEvent_[2];
-    std::vector<int64> lastStamp_[2];
+    std::vector<int64> lastStamp_[2];  // with delays: each pixel's last stamp, which its next may not precede
     std::vector<std::pair<int, int>> hotPixels_[2];  // pixel index, polarity
     bool delayed_ = false;
     Render cur_[2], next_[2];

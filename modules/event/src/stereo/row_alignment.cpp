@@ -12,20 +12,6 @@ namespace {
 
 const int kMaxRowShift = 4;
 
-// Normalised correlation of two equally sized float images (0 when either is flat).
-double correlation(const Mat& a, const Mat& b)
-{
-    Scalar ma, sa, mb, sb;
-    meanStdDev(a, ma, sa);
-    meanStdDev(b, mb, sb);
-    if (sa[0] <= 0 || sb[0] <= 0)
-        return 0;
-    Mat za, zb;
-    subtract(a, ma, za);
-    subtract(b, mb, zb);
-    return za.dot(zb) / ((double)a.total() * sa[0] * sb[0]);
-}
-
 struct StripMatch
 {
     double rowShift, score;
@@ -37,39 +23,48 @@ struct StripMatch
 StripMatch stripShift(const Mat& left, const Mat& right, int x0, int x1, int minD, int maxD)
 {
     const int rows = left.rows - 2 * kMaxRowShift;
-    double best = -2;
-    int bestD = minD, bestDy = 0;
-    std::vector<double> byShift(2 * kMaxRowShift + 1, -2);
+    // The left strip is the same for every candidate: its zero-mean copy and deviation once. With a zero-mean
+    // left side, the correlation's numerator needs no mean of the right side: sum (a - ma)(b - mb) = sum (a - ma) b.
+    Scalar mean, sd;
+    const Mat strip = left(Rect(x0, kMaxRowShift, x1 - x0, rows));
+    meanStdDev(strip, mean, sd);
+    StripMatch match{ 0, -2, minD };
+    Mat zeroMean;
+    subtract(strip, mean, zeroMean);
+    const double n = (double)strip.total();
+    std::vector<double> row(2 * kMaxRowShift + 1), bestRow;
+    int bestDy = 0;
     for (int d = minD; d <= maxD; d++)
     {
         if (x0 - d < 0 || x1 - d > right.cols)
             continue;
         for (int dy = -kMaxRowShift; dy <= kMaxRowShift; dy++)
         {
-            const double c = correlation(left(Rect(x0, kMaxRowShift, x1 - x0, rows)),
-                                         right(Rect(x0 - d, kMaxRowShift + dy, x1 - x0, rows)));
-            if (c > best)
+            const Mat other = right(Rect(x0 - d, kMaxRowShift + dy, x1 - x0, rows));
+            Scalar otherMean, otherSd;
+            meanStdDev(other, otherMean, otherSd);
+            const double c = sd[0] > 0 && otherSd[0] > 0 ? zeroMean.dot(other) / (n * sd[0] * otherSd[0]) : 0;  // 0: flat
+            row[(size_t)(dy + kMaxRowShift)] = c;
+            if (c > match.score)
             {
-                best = c;
-                bestD = d;
+                match.score = c;
+                match.disparity = d;
                 bestDy = dy;
             }
         }
+        if (match.disparity == d)
+            bestRow = row;
     }
-    for (int dy = -kMaxRowShift; dy <= kMaxRowShift; dy++)
-        if (x0 - bestD >= 0 && x1 - bestD <= right.cols)
-            byShift[(size_t)(dy + kMaxRowShift)] = correlation(left(Rect(x0, kMaxRowShift, x1 - x0, rows)),
-                                                               right(Rect(x0 - bestD, kMaxRowShift + dy, x1 - x0, rows)));
-    double shift = bestDy;
-    if (bestDy > -kMaxRowShift && bestDy < kMaxRowShift)
+    match.rowShift = bestDy;
+    if (!bestRow.empty() && bestDy > -kMaxRowShift && bestDy < kMaxRowShift)
     {
-        const double cm = byShift[(size_t)(bestDy + kMaxRowShift - 1)], c0 = byShift[(size_t)(bestDy + kMaxRowShift)],
-                     cp = byShift[(size_t)(bestDy + kMaxRowShift + 1)];
+        const double cm = bestRow[(size_t)(bestDy + kMaxRowShift - 1)], c0 = bestRow[(size_t)(bestDy + kMaxRowShift)],
+                     cp = bestRow[(size_t)(bestDy + kMaxRowShift + 1)];
         const double curvature = cm - 2 * c0 + cp;
         if (curvature < 0)
-            shift += std::max(-0.5, std::min(0.5, 0.5 * (cm - cp) / curvature));
+            match.rowShift += std::max(-0.5, std::min(0.5, 0.5 * (cm - cp) / curvature));
     }
-    return StripMatch{ shift, best, bestD };
+    return match;
 }
 
 }  // namespace

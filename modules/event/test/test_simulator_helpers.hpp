@@ -1,0 +1,47 @@
+// This file is part of OpenCV project.
+// It is subject to the license terms in the LICENSE file found in the top-level directory
+// of this distribution and at http://opencv.org/license.html.
+
+// Helpers of opencv_test_event: simulator scenes with closed-form answers.
+
+#ifndef OPENCV_EVENT_TEST_SIMULATOR_HELPERS_HPP
+#define OPENCV_EVENT_TEST_SIMULATOR_HELPERS_HPP
+
+#include "opencv2/event.hpp"
+
+#include <vector>
+
+namespace opencv_test {
+
+/** A bright uniform plane (0.9) whose right edge sweeps right over a dark uniform background (0.1, at twice
+the depth): one straight vertical edge of log contrast ln 9 moving at f * speed / depth px/s. At t = 0 the
+edge is @p edgeStartX metres right of the optical axis (negative: left of it) at @p depth. */
+inline std::vector<cv::event::SimulatedPlane> sweepingEdgeScene(double depth, double speed, double edgeStartX)
+{
+    cv::event::SimulatedPlane back;
+    back.center = cv::Vec3d(0, 0, 2 * depth);
+    back.halfSize = cv::Vec2d(10, 10);
+    back.texture = cv::event::TEXTURE_UNIFORM;
+    back.intensity = 0.1;
+    cv::event::SimulatedPlane front = back;
+    front.center = cv::Vec3d(edgeStartX - 1.0, 0, depth);  // 1 m half width: the right edge at edgeStartX
+    front.halfSize = cv::Vec2d(1.0, 10);
+    front.intensity = 0.9;
+    front.velocity = cv::Vec3d(speed, 0, 0);
+    return { back, front };
+}
+
+/** A small sensor (96 x 32) where every crossing counts: every pixel at the nominal threshold, no refractory
+period. */
+inline cv::event::SimulatorSettings idealSmallSensor()
+{
+    cv::event::SimulatorSettings s;
+    s.resolution = cv::Size(96, 32);
+    s.thresholdSigma = 0;
+    s.refractoryUs = 0;
+    return s;
+}
+
+}  // namespace opencv_test
+
+#endif
