@@ -11,9 +11,12 @@
 // --set=uniquenessRatio=20,costWindow=7); `lifetime` = LifetimeEstimator per camera (lifetime and noise metrics, no disparity).
 //
 // Writes DIR/report.md and DIR/metrics.csv (disparity density, share within 1 px, matching rate (left signal
-// events within 1 px of the truth over all left signal events), mean absolute disparity
+// events within 1 px of the truth over all left signal events) and where the other left signal events went,
+// precision at 50 / 75 % density and with no rejection (the per-event modes run a second matcher with
+// minimum confidence 0 and rank its estimates by confidence), mean absolute disparity
 // error, relative depth error, lifetime median relative error, noise precision / recall, events with a
-// lifetime, time per event) and pictures: DIR/disparity_error_histogram.png and DIR/disparity_vs_truth.png.
+// lifetime, time per event) and pictures: DIR/disparity_error_histogram.png, DIR/disparity_vs_truth.png and,
+// for the per-event modes, DIR/density_precision.png.
 
 #include <opencv2/calib3d.hpp>
 #include <opencv2/event.hpp>
@@ -82,18 +85,78 @@ struct EvaluationTotals
     int64 events = 0, signal = 0, noise = 0, candidates = 0, estimated = 0, within1 = 0, withLifetime = 0;
     // The matching rate: left signal events (occluded ones included) whose disparity is within 1 px of the truth.
     int64 leftSignal = 0, leftMatched = 0;
+    // Where the other left signal events go: a disparity more than 1 px off, rejected (STEREO_AMBIGUOUS),
+    // no candidate (STEREO_NO_COUNTERPART); the rest had neither (outside the rectified image, or 0).
+    int64 leftWrong = 0, leftAmbiguous = 0, leftNoCounterpart = 0;
     int64 withLifetimeCamera[2] = { 0, 0 };
     int64 noiseTrue = 0, noiseFlagged = 0, noiseCorrect = 0;
     double absError = 0, relDepthError = 0;
     std::vector<int> errorHistogram = std::vector<int>(41, 0);  // |error| in 0.25 px bins up to 10 px
     std::vector<double> lifetimeRelErrors;
+    // Non-occluded signal events with a best estimate (no rejection): its confidence, and whether it is within 1 px.
+    std::vector<std::pair<float, bool>> ranked;
 };
+
+// Precision (share within 1 px) of the most confident estimates that make up `density` % of the
+// non-occluded signal events; -1 when the estimates do not reach that density. `ranked` is sorted.
+double precisionAtDensity(const std::vector<std::pair<float, bool>>& ranked, int64 candidates, double density)
+{
+    const size_t n = (size_t)std::llround(density / 100.0 * (double)candidates);
+    if (n == 0 || n > ranked.size())
+        return -1;
+    size_t good = 0;
+    for (size_t i = 0; i < n; i++)
+        good += ranked[i].second;
+    return 100.0 * (double)good / (double)n;
+}
+
+// The density-precision curve of the ranked estimates, with the method's own operating point (its
+// rejection threshold) marked.
+void drawDensityPrecision(const std::vector<std::pair<float, bool>>& ranked, int64 candidates, double density,
+                          double precision, const std::string& path, const std::string& title)
+{
+    const int w = 500, h = 300, left = 50, top = 40;
+    Mat img(h + top + 50, w + left + 20, CV_8UC3, Scalar::all(255));
+    const double lowest = 50;  // precision axis from 50 to 100 %
+    auto at = [&](double d, double p) {
+        return Point(left + (int)std::lround(d / 100 * w), top + (int)std::lround((100 - std::max(lowest, p)) / (100 - lowest) * h));
+    };
+    rectangle(img, at(0, 100), at(100, lowest), Scalar(200, 200, 200));
+    for (int p = 60; p < 100; p += 10)
+        line(img, at(0, p), at(100, p), Scalar(235, 235, 235));
+    size_t good = 0;
+    Point previous(-1, -1);
+    const size_t step = std::max<size_t>(1, ranked.size() / 500);
+    for (size_t i = 0; i < ranked.size(); i++)
+    {
+        good += ranked[i].second;
+        if ((i + 1) % step != 0 && i + 1 != ranked.size())
+            continue;
+        const Point q = at(100.0 * (double)(i + 1) / (double)candidates, 100.0 * (double)good / (double)(i + 1));
+        if (previous.x >= 0)
+            line(img, previous, q, Scalar(180, 90, 30), 2, LINE_AA);
+        previous = q;
+    }
+    circle(img, at(density, precision), 5, Scalar(0, 0, 220), FILLED, LINE_AA);
+    putText(img, title, Point(10, 22), FONT_HERSHEY_SIMPLEX, 0.5, Scalar(0, 0, 0), 1, LINE_AA);
+    putText(img, "100 %", Point(5, top + 5), FONT_HERSHEY_SIMPLEX, 0.35, Scalar(0, 0, 0), 1, LINE_AA);
+    putText(img, "50 %", Point(10, top + h), FONT_HERSHEY_SIMPLEX, 0.35, Scalar(0, 0, 0), 1, LINE_AA);
+    putText(img, "density (estimates / non-occluded signal events), 0 .. 100 %", Point(left, top + h + 20),
+            FONT_HERSHEY_SIMPLEX, 0.38, Scalar(0, 0, 0), 1, LINE_AA);
+    putText(img, "up: precision (within 1 px); red dot: the rejection threshold", Point(left, top + h + 38),
+            FONT_HERSHEY_SIMPLEX, 0.38, Scalar(0, 0, 0), 1, LINE_AA);
+    imwrite(path, img);
+}
 
 // What a method says about each event of a window: disparity (-1: none), lifetime [us] (0: noise), and
 // which of the two it estimates at all.
 struct MethodOutput
 {
-    std::vector<float> disparity, lifetime;
+    std::vector<float> disparity, lifetime, confidence;
+    std::vector<int> flags;
+    // The same method with no rejection (minimum confidence 0): every event's best estimate and its confidence,
+    // for the density-precision curve; empty for methods without a confidence.
+    std::vector<float> bestDisparity, bestConfidence;
     bool hasDisparity = false, hasLifetime = false;
 };
 
@@ -102,6 +165,13 @@ class Method
 public:
     virtual ~Method() {}
     virtual void process(const std::vector<Event>& window, MethodOutput& out) = 0;
+    // Fills out.bestDisparity / bestConfidence (not timed); nothing for methods without a confidence.
+    virtual void processUnfiltered(const std::vector<Event>& window, MethodOutput& out)
+    {
+        (void)window;
+        out.bestDisparity.clear();
+        out.bestConfidence.clear();
+    }
 };
 
 // A StereoEventMatcher mode: COUPLED / DECOUPLED / FIXED_INTERVAL per event, FRAME_SGBM per window (the
@@ -113,20 +183,38 @@ public:
     {
         matcher_->setFrameWindow(windowUs);
         applyMatcherSettings(matcher_, settings);
+        if (mode != STEREO_FRAME_SGBM)
+        {
+            unfiltered_ = StereoEventMatcher::create(size, mode);
+            applyMatcherSettings(unfiltered_, settings);
+            unfiltered_->setMinConfidence(0);
+        }
     }
 
     void process(const std::vector<Event>& window, MethodOutput& out) CV_OVERRIDE
     {
-        Mat disparity, lifetime;
-        matcher_->process(window, disparity, lifetime);
+        Mat disparity, lifetime, flags, confidence;
+        matcher_->process(window, disparity, lifetime, flags, noArray(), noArray(), confidence);
         out.hasDisparity = true;
         out.hasLifetime = matcher_->getMode() == STEREO_COUPLED || matcher_->getMode() == STEREO_DECOUPLED;
         out.disparity.assign(disparity.begin<float>(), disparity.end<float>());
         out.lifetime.assign(lifetime.begin<float>(), lifetime.end<float>());
+        out.flags.assign(flags.begin<int>(), flags.end<int>());
+        out.confidence.assign(confidence.begin<float>(), confidence.end<float>());
+    }
+
+    void processUnfiltered(const std::vector<Event>& window, MethodOutput& out) CV_OVERRIDE
+    {
+        if (!unfiltered_)
+            return Method::processUnfiltered(window, out);
+        Mat disparity, confidence;
+        unfiltered_->process(window, disparity, noArray(), noArray(), noArray(), noArray(), confidence);
+        out.bestDisparity.assign(disparity.begin<float>(), disparity.end<float>());
+        out.bestConfidence.assign(confidence.begin<float>(), confidence.end<float>());
     }
 
 private:
-    Ptr<StereoEventMatcher> matcher_;
+    Ptr<StereoEventMatcher> matcher_, unfiltered_;
 };
 
 // Lifetime per camera (LifetimeEstimator, plane fitting); no disparity.
@@ -304,6 +392,7 @@ int main(int argc, char** argv)
             const auto t0 = std::chrono::steady_clock::now();
             method->process(window, estimate);
             seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+            method->processUnfiltered(window, estimate);
 
             lastEstimate = Mat::zeros(size, CV_32F);
             lastTruth = Mat::zeros(size, CV_32F);
@@ -333,12 +422,24 @@ int main(int argc, char** argv)
                 if (window[i].camera == CAMERA_LEFT)
                 {
                     acc.leftSignal++;
-                    acc.leftMatched += estimate.hasDisparity && estimate.disparity[i] > 0 &&
-                                       std::abs(estimate.disparity[i] - g[GT_DISPARITY]) <= 1.0;
+                    if (estimate.hasDisparity && estimate.disparity[i] > 0)
+                    {
+                        const bool within = std::abs(estimate.disparity[i] - g[GT_DISPARITY]) <= 1.0;
+                        acc.leftMatched += within;
+                        acc.leftWrong += !within;
+                    }
+                    else if (!estimate.flags.empty())
+                    {
+                        acc.leftAmbiguous += (estimate.flags[i] & STEREO_AMBIGUOUS) != 0;
+                        acc.leftNoCounterpart += (estimate.flags[i] & STEREO_NO_COUNTERPART) != 0;
+                    }
                 }
                 if (flags & GT_FLAG_OCCLUDED)
                     continue;
                 acc.candidates++;
+                if (!estimate.bestDisparity.empty() && estimate.bestDisparity[i] >= 0)
+                    acc.ranked.push_back(std::make_pair(estimate.bestConfidence[i],
+                                                        std::abs(estimate.bestDisparity[i] - g[GT_DISPARITY]) <= 1.0));
                 if (window[i].camera == CAMERA_LEFT)
                     lastTruth.at<float>(window[i].y, window[i].x) = g[GT_DISPARITY];
                 if (!estimate.hasDisparity || estimate.disparity[i] <= 0)
@@ -376,6 +477,14 @@ int main(int argc, char** argv)
             precision = acc.noiseFlagged ? std::to_string(share(acc.noiseCorrect, acc.noiseFlagged)) : "n/a";
             recall = acc.noiseTrue ? std::to_string(share(acc.noiseCorrect, acc.noiseTrue)) : "n/a (no noise)";
         }
+        // Precision at fixed densities, from the ranking by confidence (the most confident first).
+        std::stable_sort(acc.ranked.begin(), acc.ranked.end(),
+                         [](const std::pair<float, bool>& a, const std::pair<float, bool>& b) { return a.first > b.first; });
+        const double fullDensity = share((int64)acc.ranked.size(), acc.candidates);
+        const double at50 = precisionAtDensity(acc.ranked, acc.candidates, 50);
+        const double at75 = precisionAtDensity(acc.ranked, acc.candidates, 75);
+        const double atFull = precisionAtDensity(acc.ranked, acc.candidates, fullDensity);
+        auto percent = [](double v) { return v < 0 ? std::string("n/a") : cv::format("%.1f %%", v); };
         std::ofstream csv(o.output + "/metrics.csv");
         csv << "metric,value\n"
             << "events," << acc.events << "\n"
@@ -385,6 +494,13 @@ int main(int argc, char** argv)
             << "disparity_density_percent," << density << "\n"
             << "within_1px_percent," << within1 << "\n"
             << "matching_rate_percent," << matchingRate << "\n"
+            << "left_wrong_percent," << share(acc.leftWrong, acc.leftSignal) << "\n"
+            << "left_ambiguous_percent," << share(acc.leftAmbiguous, acc.leftSignal) << "\n"
+            << "left_no_counterpart_percent," << share(acc.leftNoCounterpart, acc.leftSignal) << "\n"
+            << "precision_at_50_percent_density," << at50 << "\n"
+            << "precision_at_75_percent_density," << at75 << "\n"
+            << "unfiltered_density_percent," << fullDensity << "\n"
+            << "precision_at_unfiltered_density," << atFull << "\n"
             << "mean_abs_disparity_error_px," << mae << "\n"
             << "relative_depth_error_percent," << relDepth << "\n"
             << "lifetime_median_relative_error_percent," << lifetimeError << "\n"
@@ -404,6 +520,13 @@ int main(int argc, char** argv)
            << "| estimated events within 1 px | " << within1 << " % |\n"
            << "| matching rate (left signal events within 1 px of the truth / all left signal events) | " << matchingRate
            << " % (" << acc.leftMatched << " / " << acc.leftSignal << ") |\n"
+           << "| left signal events more than 1 px off / rejected (ambiguous) / without a candidate | "
+           << share(acc.leftWrong, acc.leftSignal) << " / " << share(acc.leftAmbiguous, acc.leftSignal) << " / "
+           << share(acc.leftNoCounterpart, acc.leftSignal) << " % |\n"
+           << "| precision (within 1 px) of the most confident estimates at 50 / 75 % density | "
+           << (acc.ranked.empty() ? std::string("n/a (" + o.method + " has no confidence)") : percent(at50) + " / " + percent(at75)) << " |\n"
+           << "| ... with no rejection (every event's best estimate): density, precision | "
+           << (acc.ranked.empty() ? std::string("n/a") : percent(fullDensity) + ", " + percent(atFull)) << " |\n"
            << "| mean absolute disparity error | " << mae << " px |\n"
            << "| mean relative depth error | " << relDepth << " % |\n"
            << "| lifetime median relative error | " << lifetimeError << (estimate.hasLifetime ? " %" : " (" + o.method + " estimates no lifetimes)") << " |\n"
@@ -413,6 +536,12 @@ int main(int argc, char** argv)
            << "| time per event | " << usPerEvent << " us |\n\n"
            << "![error histogram](disparity_error_histogram.png)\n\n"
            << "![estimate | ground truth](disparity_vs_truth.png)\n";
+        if (!acc.ranked.empty())
+        {
+            drawDensityPrecision(acc.ranked, acc.candidates, density, within1, o.output + "/density_precision.png",
+                                 "precision against density, ranked by confidence (" + o.method + ")");
+            md << "\n![density-precision curve](density_precision.png)\n";
+        }
         drawHistogram(acc.errorHistogram, o.output + "/disparity_error_histogram.png",
                       "|disparity error| histogram, 0.25 px bins (" + o.method + ")");
         if (estimate.hasLifetime)

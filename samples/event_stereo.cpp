@@ -7,7 +7,7 @@
 //                [--all-frames] [--output=DIR] [--set=NAME=VALUE,...] [--scene=NAME --duration-ms=MS]
 //                (no input: simulate, with ground truth)
 //
-// Writes into DIR: events.csv (t,x,y,p,camera,disparity,depth,lifetime,flags per event, x/y rectified),
+// Writes into DIR: events.csv (t,x,y,p,camera,disparity,depth,lifetime,flags,confidence per event, x/y rectified),
 // disparity.avi with one frame per --frame-ms window when a video writer is available (left | right active
 // events coloured by disparity, the paper's Figure 1; plus the ground truth below when simulated), the same
 // picture as disparity_NNNNN.png (NNNNN: the window) for the first window and one per eighth of the run
@@ -347,7 +347,7 @@ int main(int argc, char** argv)
         if (opt.csv)
         {
             csv.open(opt.output + "/events.csv");
-            csv << "t,x,y,p,camera,disparity,depth,lifetime,flags\n";
+            csv << "t,x,y,p,camera,disparity,depth,lifetime,flags,confidence\n";
         }
         const int zoom = std::max(1, 480 / std::max(size.width, size.height));
         VideoWriter video;
@@ -358,7 +358,7 @@ int main(int argc, char** argv)
         SampleProgress progress;
         double absError = 0, seconds = 0;
         std::vector<Event> packet;
-        Mat truth, disparity, lifetime, flags, depth, truthDisparity;
+        Mat truth, disparity, lifetime, flags, depth, confidence, truthDisparity;
         double windowEnd = 0;
         char line[160];
         RowAlignmentCheck alignment(size, opt.minDisparity, opt.maxDisparity, opt.calib);
@@ -366,7 +366,7 @@ int main(int argc, char** argv)
         {
             alignment.add(packet);
             const int64 t0 = getTickCount();
-            matcher->process(packet, disparity, lifetime, flags, depth);
+            matcher->process(packet, disparity, lifetime, flags, depth, noArray(), confidence);
             seconds += (double)(getTickCount() - t0) / getTickFrequency();
             if (source.hasTruth())
                 truthDisparity = Mat::zeros(size, CV_32F);
@@ -398,8 +398,9 @@ int main(int argc, char** argv)
                 }
                 if (csv.is_open())
                 {
-                    std::snprintf(line, sizeof(line), "%lld,%d,%d,%d,%d,%.2f,%.4f,%.0f,%d\n", (long long)e.t, e.x, e.y,
-                                  e.p, e.camera, d, depth.at<float>((int)i), lifetime.at<float>((int)i), f);
+                    std::snprintf(line, sizeof(line), "%lld,%d,%d,%d,%d,%.2f,%.4f,%.0f,%d,%.3f\n", (long long)e.t, e.x, e.y,
+                                  e.p, e.camera, d, depth.at<float>((int)i), lifetime.at<float>((int)i), f,
+                                  confidence.at<float>((int)i));
                     csv << line;
                 }
             }

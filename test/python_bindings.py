@@ -75,8 +75,12 @@ matcher = ev.StereoEventMatcher_create((64, 24), ev.STEREO_COUPLED)
 calib = ev.StereoCalibration_fromRectified((64, 24), 100.0, 0.1)
 assert abs(calib.baseline() - 0.1) < 1e-12 and calib.P2.shape == (3, 4)
 matcher.setMaxDisparity(30)
-disparity, lifetime, flags, depth, flow = matcher.process(stereo)
+disparity, lifetime, flags, depth, flow, confidence = matcher.process(stereo)
 found = disparity.ravel() >= 0
+# Kept estimates reach the rejection threshold; rejected ones (STEREO_AMBIGUOUS) stay below it.
+assert np.all(confidence.ravel()[found] >= matcher.getMinConfidence())
+rejected = (flags.ravel() & ev.STEREO_AMBIGUOUS) != 0
+assert np.all(confidence.ravel()[rejected] < matcher.getMinConfidence())
 assert found.sum() > len(events) // 2, found.sum()
 # Judged away from the borders and the start, as the C++ edge test: in the bottom-right corner the clipped
 # window leaves a few events 1.05-1.2 px off (the left events come 300 us before their counterparts).

@@ -249,14 +249,15 @@ TEST(StereoEventMatcher, process_and_processEvent_agree_and_runs_repeat)
     {
         Ptr<StereoEventMatcher> batch = StereoEventMatcher::create(sim->getSensorSize(), mode);
         Ptr<StereoEventMatcher> single = StereoEventMatcher::create(sim->getSensorSize(), mode);
-        Mat d, lt, fl;
-        batch->process(ev, d, lt, fl);
+        Mat d, lt, fl, confidence;
+        batch->process(ev, d, lt, fl, noArray(), noArray(), confidence);
         StereoEventEstimate s;
         int differ = 0;
         for (int i = 0; i < (int)ev.size(); i++)
         {
             single->processEvent(ev[(size_t)i], s);
-            differ += s.disparity != d.at<float>(i) || s.lifetime != lt.at<float>(i) || s.flags != fl.at<int>(i);
+            differ += s.disparity != d.at<float>(i) || s.lifetime != lt.at<float>(i) || s.flags != fl.at<int>(i) ||
+                      s.confidence != confidence.at<float>(i);
         }
         EXPECT_EQ(differ, 0) << getStereoModeName(mode);
         batch->reset();
@@ -299,6 +300,9 @@ TEST(StereoEventMatcher, bad_input_raises_errors_that_name_the_event)
     EXPECT_THROW(m->setMode(7), cv::Exception);
     EXPECT_THROW(m->setActiveDistance(0), cv::Exception);
     EXPECT_THROW(m->setActiveDistance(std::numeric_limits<double>::quiet_NaN()), cv::Exception);
+    EXPECT_THROW(m->setMinConfidence(1.5), cv::Exception);
+    EXPECT_THROW(m->setMinConfidence(std::numeric_limits<double>::quiet_NaN()), cv::Exception);
+    EXPECT_THROW(m->setPriorTolerance(-1), cv::Exception);
     EXPECT_THROW(m->setCalibration(StereoCalibration::fromRectified(Size(240, 180), 200, 0.1)), cv::Exception);
 }
 
@@ -312,6 +316,8 @@ TEST(StereoEventMatcher, parameters_round_trip_through_FileStorage)
     a->setCostWindow(7);
     a->setAggregationWindow(13);
     a->setUniquenessRatio(30);
+    a->setMinConfidence(0.4);
+    a->setPriorTolerance(55);
     a->setFixedInterval(5000);
     a->setActiveDistance(1.5);
     a->getLifetimeEstimator(0)->setWindowSize(7);
@@ -330,6 +336,8 @@ TEST(StereoEventMatcher, parameters_round_trip_through_FileStorage)
     EXPECT_EQ(b->getCostWindow(), 7);
     EXPECT_EQ(b->getAggregationWindow(), 13);
     EXPECT_EQ(b->getUniquenessRatio(), 30);
+    EXPECT_EQ(b->getMinConfidence(), 0.4);
+    EXPECT_EQ(b->getPriorTolerance(), 55);
     EXPECT_EQ(b->getFixedInterval(), 5000);
     EXPECT_EQ(b->getActiveDistance(), 1.5);
     EXPECT_EQ(b->getLifetimeEstimator(1)->getWindowSize(), 7);

@@ -9,7 +9,7 @@ namespace opencv_test { namespace {
 // Everything process() returns for a run, and the lifetime estimators' status counts after it.
 struct RunOutputs
 {
-    std::vector<Mat> packets;  // per packet: disparity, lifetime, flags, depth, flow
+    std::vector<Mat> packets;  // per packet: disparity, lifetime, flags, depth, flow, confidence
     std::vector<double> statusCounts;
 };
 
@@ -23,9 +23,9 @@ RunOutputs runMatcher(const std::vector<std::vector<Event>>& packets, Size size,
     RunOutputs out;
     for (const std::vector<Event>& ev : packets)
     {
-        Mat d, lt, fl, depth, flow;
-        m->process(ev, d, lt, fl, depth, flow);
-        for (const Mat& o : { d, lt, fl, depth, flow })
+        Mat d, lt, fl, depth, flow, confidence;
+        m->process(ev, d, lt, fl, depth, flow, confidence);
+        for (const Mat& o : { d, lt, fl, depth, flow, confidence })
             out.packets.push_back(o.clone());
     }
     for (int c = 0; c < 2; c++)

@@ -30,12 +30,12 @@ StereoEventMatcherImpl::StereoEventMatcherImpl(Size size, int mode)
 }
 
 void StereoEventMatcherImpl::process(InputArray events, OutputArray disparity, OutputArray lifetime, OutputArray flags, OutputArray depth,
-             OutputArray flow)
+             OutputArray flow, OutputArray confidence)
 {
     Mat_<Event> ev = getEventMat(events);
     const int n = (int)ev.total();
     disparity.create(n, 1, CV_32F);
-    Mat_<float> disp = disparity.getMat(), lt, dep, fl;
+    Mat_<float> disp = disparity.getMat(), lt, dep, fl, conf;
     Mat_<int> fla;
     if (lifetime.needed())
     {
@@ -57,8 +57,15 @@ void StereoEventMatcherImpl::process(InputArray events, OutputArray disparity, O
         flow.create(n, 2, CV_32F);
         fl = flow.getMat();
     }
+    if (confidence.needed())
+    {
+        confidence.create(n, 1, CV_32F);
+        conf = confidence.getMat();
+    }
     auto store = [&](int i, const StereoEventEstimate& s) {
         disp(i) = s.disparity;
+        if (!conf.empty())
+            conf(i) = s.confidence;
         if (!lt.empty())
             lt(i) = s.lifetime;
         if (!fla.empty())
@@ -124,11 +131,18 @@ void StereoEventMatcherImpl::processAdmitted(const Event& e, Point r, int64 cold
     // The event takes part in its own descriptor while it is matched; its final activity follows below.
     maps_[c].activate(r.x, r.y, p, std::numeric_limits<int64>::max(), 0.f, Vec2f());
     const MatchResult m = match(c, r, p, e.t, s);
-    est.disparity = m.disparity;
     est.flags |= m.flags;
+    est.confidence = m.confidence;
+    if (m.disparity >= 0)
+    {
+        if (m.confidence >= minConfidence_)
+            est.disparity = m.disparity;
+        else
+            est.flags |= STEREO_AMBIGUOUS;
+    }
     if (mode_ == STEREO_COUPLED)
     {
-        if (m.disparity >= 0 && matchedLifetime(1 - c, m.counterpartX, r.y, p, s, est.lifetime, est.flow))
+        if (est.disparity >= 0 && matchedLifetime(1 - c, m.counterpartX, r.y, p, s, est.lifetime, est.flow))
         {
             insertEventInRows(estimator, re, est.lifetime, est.flow, s.lifetimes[c]);
             status = LIFETIME_MATCHED;
@@ -151,6 +165,7 @@ void StereoEventMatcherImpl::processAdmitted(const Event& e, Point r, int64 cold
         // activity, which needs no history).
         activeFor = activeSpan(fixedInterval_);
     }
+
     if (activeFor > 0)
         maps_[c].activate(r.x, r.y, p, timeAfter(e.t, activeFor), est.lifetime, est.flow);
     else
@@ -252,6 +267,7 @@ void StereoEventMatcherImpl::processFrames(const Mat_<Event>& ev, const StoreFn&
             if (s.disparity >= 0)
             {
                 s.flags = STEREO_HAS_DISPARITY;
+                s.confidence = 1.f;
                 if (s.disparity > 0 && focalBaseline_ != 0)
                     s.depth = (float)(focalBaseline_ / s.disparity);
             }
@@ -460,6 +476,21 @@ void StereoEventMatcherImpl::setUniquenessRatio(int u)
     uniquenessRatio_ = u;
 }
 
+void StereoEventMatcherImpl::setMinConfidence(double c)
+{
+    if (!(c >= 0 && c <= 1))
+        CV_Error_(Error::StsBadArg, ("StereoEventMatcher: minimum confidence %g; must be 0..1 (0: every event with a "
+                                     "candidate keeps its best disparity)", c));
+    minConfidence_ = c;
+}
+
+void StereoEventMatcherImpl::setPriorTolerance(int percent)
+{
+    if (percent < 0 || percent > 1000)
+        CV_Error_(Error::StsBadArg, ("StereoEventMatcher: prior tolerance %d %%; must be 0..1000 %% (0: no temporal prior)", percent));
+    priorTolerance_ = percent;
+}
+
 void StereoEventMatcherImpl::setFrameWindow(double us)
 {
     frameWindow_ = duration(us, "frame window");
@@ -487,7 +518,7 @@ void StereoEventMatcherImpl::write(FileStorage& fs) const
     fs << "mode" << getStereoModeName(mode_) << "sensorWidth" << size_.width << "sensorHeight" << size_.height
        << "minDisparity" << minDisparity_ << "maxDisparity" << maxDisparity_ << "descriptorWindow" << descriptorWindow_
        << "maxVectorLength" << maxVectorLength_ << "costWindow" << costWindow_ << "aggregationWindow"
-       << aggregationWindow_ << "uniquenessRatio" << uniquenessRatio_ << "fixedInterval" << (double)fixedInterval_
+       << aggregationWindow_ << "uniquenessRatio" << uniquenessRatio_ << "minConfidence" << minConfidence_ << "priorTolerance" << priorTolerance_ << "fixedInterval" << (double)fixedInterval_
        << "frameWindow" << (double)frameWindow_ << "maxLifetime" << (double)maxLifetime_ << "activeDistance"
        << activeDistance_;
     fs << "lifetimeEstimator" << "{";
@@ -521,6 +552,8 @@ void StereoEventMatcherImpl::read(const FileNode& fn)
     setCostWindow((int)num("costWindow", costWindow_));
     setAggregationWindow((int)num("aggregationWindow", aggregationWindow_));
     setUniquenessRatio((int)num("uniquenessRatio", uniquenessRatio_));
+    setMinConfidence(num("minConfidence", minConfidence_));
+    setPriorTolerance((int)num("priorTolerance", priorTolerance_));
     setFixedInterval(num("fixedInterval", (double)fixedInterval_));
     setFrameWindow(num("frameWindow", (double)frameWindow_));
     setMaxLifetime(num("maxLifetime", (double)maxLifetime_));
@@ -572,7 +605,7 @@ void StereoEventMatcherImpl::setDisparityRange(int lo, int hi)
 // fit's window. Operations further apart in rows than the sum of their reaches touch disjoint state.
 int StereoEventMatcherImpl::eventRowReach() const
 {
-    return std::max({ aggregationWindow_ / 2, costWindow_ / 2, 1, expiryRowReach(), lifetimeRowReach(*estimators_[0]),
+    return std::max({ aggregationWindow_ / 2, costWindow_ / 2, 1, (int)PRIOR_RADIUS, expiryRowReach(), lifetimeRowReach(*estimators_[0]),
                       lifetimeRowReach(*estimators_[1]) });
 }
 

@@ -20,12 +20,14 @@ namespace cv {
 namespace event {
 namespace detail {
 
-/** The outcome of matching one event along its row (StereoEventMatcherImpl::match). */
+/** The outcome of matching one event along its row (StereoEventMatcherImpl::match): the best candidate,
+whatever its confidence; the caller decides whether to keep it. */
 struct MatchResult
 {
-    float disparity = -1.f;
-    int counterpartX = -1;  // the matched pixel of the other sensor (integer disparity)
-    int flags = 0;          // STEREO_AMBIGUOUS / STEREO_NO_COUNTERPART when no disparity
+    float disparity = -1.f;  // -1: no candidate
+    int counterpartX = -1;   // the matched pixel of the other sensor (integer disparity)
+    float confidence = 0.f;  // StereoEventEstimate::confidence
+    int flags = 0;           // STEREO_NO_COUNTERPART when there was no candidate
 };
 
 /** An active event of the matched window: its lifetime and its index in the map's per-pixel arrays. */
@@ -63,7 +65,7 @@ public:
     enum { MIN_EVENTS_FOR_BANDS = 1000 };
 
     void process(InputArray events, OutputArray disparity, OutputArray lifetime, OutputArray flags, OutputArray depth,
-                 OutputArray flow) CV_OVERRIDE;
+                 OutputArray flow, OutputArray confidence) CV_OVERRIDE;
 
     void processEvent(const Event& e, StereoEventEstimate& est) CV_OVERRIDE;
     void renderDisparity(double t, OutputArray image, int camera, bool colourBar) const CV_OVERRIDE;
@@ -102,6 +104,12 @@ public:
     int getUniquenessRatio() const CV_OVERRIDE { return uniquenessRatio_; }
 
     void setUniquenessRatio(int u) CV_OVERRIDE;
+    double getMinConfidence() const CV_OVERRIDE { return minConfidence_; }
+
+    void setMinConfidence(double c) CV_OVERRIDE;
+    int getPriorTolerance() const CV_OVERRIDE { return priorTolerance_; }
+
+    void setPriorTolerance(int percent) CV_OVERRIDE;
     double getFixedInterval() const CV_OVERRIDE { return (double)fixedInterval_; }
 
     void setFixedInterval(double us) CV_OVERRIDE { fixedInterval_ = duration(us, "fixed interval"); }
@@ -159,9 +167,9 @@ private:
     int64 activeSpan(double lifetime) const;
 
     // How many rows above and below its own an event's processing reads or writes: the aggregation window's
-    // descriptors (match), the matched window (its median lifetime), the left-right check's 3 x 3, the vectors
-    // an activation or deactivation changes (2 x the max length for the re-search) and their votes, the plane
-    // fit's window. Operations further apart in rows than the sum of their reaches touch disjoint state.
+    // descriptors (match), the matched window (its median lifetime), the left-right check's 3 x 3, the
+    // temporal prior's neighbourhood, the vectors an activation or deactivation changes (2 x the max length
+    // for the re-search) and their votes, the plane fit's window. Operations further apart in rows than the sum of their reaches touch disjoint state.
     int eventRowReach() const;
 
     // The same for an expiry (a deactivation).
@@ -189,8 +197,13 @@ private:
     // Sum of the descriptor values over [x0, x1] x [y0, y1] relative to q: the cost of matching against nothing.
     unsigned rectMass(const ZouDescriptorMap& map, Point q, int x0, int x1, int y0, int y1) const;
 
-    // Matches the event at r (camera c, polarity p, time t) along its row.
+    // Matches the event at r (camera c, polarity p, time t) along its row: the best candidate and its confidence.
     MatchResult match(int c, Point r, int p, int64 t, MatchScratch& s) const;
+
+    // The temporal prior's decision for an event without a unique winner at the largest window (best cost
+    // bestCost, the candidates' costs in s): false when it has none; otherwise the chosen candidate in m.
+    enum { PRIOR_RADIUS = 5, PRIOR_SUPPORT = 3 };
+    bool decideByPrior(int c, Point r, int64 t, unsigned bestCost, MatchScratch& s, MatchResult& m) const;
 
     // Left-right check against the other sensor's own estimates: the active events around the counterpart
     // were matched the other way (toward this sensor); when they have disparities, their median must agree
@@ -207,6 +220,8 @@ private:
     int descriptorWindow_ = 3, maxVectorLength_ = 3, costWindow_ = 9, aggregationWindow_ = 31, uniquenessRatio_ = 15;
     int64 fixedInterval_ = 10000, frameWindow_ = 33000, maxLifetime_ = 100000;
     double activeDistance_ = 2.5;
+    double minConfidence_ = 0.15;
+    int priorTolerance_ = 30;
     StereoCalibration calibration_;
     std::vector<int> lut_[2];  // raw pixel -> rectified pixel index (-1: outside); empty: no calibration
     double focalBaseline_ = 0;

@@ -91,32 +91,40 @@ MatchResult StereoEventMatcherImpl::match(int c, Point r, int p, int64 t, MatchS
         // the runner-up is the cheapest outside [lo, hi].
         const int lo = best > 0 && candidates[best - 1] == kBest - 1 ? best - 1 : best;
         const int hi = best < n - 1 && candidates[best + 1] == kBest + 1 ? best + 1 : best;
-        unsigned second = std::numeric_limits<unsigned>::max();
+        uint64 second = std::numeric_limits<uint64>::max();
         for (int i = 0; i < lo; i++)
-            second = std::min(second, cost[i]);
+            second = std::min(second, (uint64)cost[i]);
         for (int i = hi + 1; i < n; i++)
-            second = std::min(second, cost[i]);
+            second = std::min(second, (uint64)cost[i]);
         const unsigned bestCost = cost[best];
-        // Unique: clearly better than every candidate further than one pixel away, and clearly better than
-        // no match. "No counterpart (yet)" is one more hypothesis, with the cost of matching against nothing
-        // (the window's mass); a winner that only just beats it is most often a neighbour of a counterpart
-        // that has not arrived yet, off by 2 px, so it must win by the same margin as against a candidate.
-        const uint64 margin = (uint64)(100 - uniquenessRatio_);
-        const auto clearlyBelow = [margin](unsigned cost, unsigned alternative) {
-            return (uint64)cost * 100 < (uint64)alternative * margin;
-        };
         const int xo = r.x + sign * (minDisparity_ + kBest);  // the counterpart's column
-        bool unique = clearlyBelow(bestCost, second);
-        if (unique && !clearlyBelow(bestCost, mass))
+        // The alternatives the winner must beat: every candidate further than one pixel away, and "no
+        // counterpart (yet)", with the cost of matching against nothing (the window's mass). A winner that
+        // only just beats nothing is most often a neighbour of a counterpart that has not arrived yet, off by
+        // 2 px. The other side may simply hold more (a more sensitive sensor): against nothing, the larger
+        // of the two sides' masses counts (taken only when it can change the outcome).
+        const uint64 margin = (uint64)(100 - uniquenessRatio_);
+        const auto clearlyBelow = [margin](uint64 cost, uint64 alternative) { return cost * 100 < alternative * margin; };
+        const bool last = h >= aggregationWindow_ / 2;
+        uint64 nothing = mass;
+        if (!clearlyBelow(bestCost, nothing) && (last || clearlyBelow(bestCost, second)))
         {
-            // Not clearly better than nothing from this side; the other side may simply hold more (a more
-            // sensitive sensor): compare with its mass too.
             int x0 = -h, x1 = h, y0 = -h, y1 = h;
             clipToImage(r, x0, x1, y0, y1);  // the same columns as the costs, never empty (r is inside)
-            unique = clearlyBelow(bestCost, rectMass(other, Point(xo, r.y), x0, x1, y0, y1));
+            nothing = std::max(nothing, (uint64)rectMass(other, Point(xo, r.y), x0, x1, y0, y1));
         }
-        if (unique)
+        const uint64 alternative = std::min(second, nothing);
+        const bool unique = clearlyBelow(bestCost, alternative);
+        // Not unique at the largest window: the temporal prior may decide between the near-equals.
+        if (!unique && last && priorTolerance_ > 0 && decideByPrior(c, r, t, bestCost, s, m))
+            return m;
+        // The aggregation stops when the winner beats every alternative by the uniqueness margin, or at the
+        // largest window.
+        if (unique || last)
         {
+            // Confidence: the share by which the winner beats the best alternative; 0 when the other
+            // sensor's own estimates around the counterpart contradict it (left-right check).
+            m.confidence = alternative > 0 ? std::max(0.f, (float)(1.0 - (double)bestCost / (double)alternative)) : 0.f;
             double d = minDisparity_ + kBest;
             // Candidates run by disparity: the neighbours, when they are candidates, are next to the best.
             if (lo == best - 1 && hi == best + 1)
@@ -127,16 +135,11 @@ MatchResult StereoEventMatcherImpl::match(int c, Point r, int p, int64 t, MatchS
                     d += std::max(-0.5, std::min(0.5, 0.5 * (cm - cp) / denom));
             }
             m.counterpartX = xo;
-            if (!consistent(1 - c, m.counterpartX, r.y, d, t, s))
-            {
-                m.flags = STEREO_AMBIGUOUS;
-                return m;
-            }
             m.disparity = (float)d;
+            if (!consistent(1 - c, m.counterpartX, r.y, d, t, s))
+                m.confidence = 0.f;
             return m;
         }
-        if (h >= aggregationWindow_ / 2)
-            break;
         // Iterative aggregation: add the ring one pixel further out.
         h++;
         mass += addRect(self, other, r, -h, h, -h, -h, s);
@@ -144,8 +147,49 @@ MatchResult StereoEventMatcherImpl::match(int c, Point r, int p, int64 t, MatchS
         mass += addRect(self, other, r, -h, -h, -h + 1, h - 1, s);
         mass += addRect(self, other, r, h, h, -h + 1, h - 1, s);
     }
-    m.flags = STEREO_AMBIGUOUS;
-    return m;
+}
+
+// The temporal prior (see match()): this sensor's still active estimates within PRIOR_RADIUS pixels of r, at
+// least PRIOR_SUPPORT of them. Their median is the prior; the cheapest candidate within a pixel of it wins when
+// its cost is within priorTolerance_ % of the best's, with the share of those estimates that agree with the
+// median within a pixel as its confidence. Edges move across the sensor a pixel at a time: what their events
+// were matched to a moment ago, nearby, is most often what the next one should be matched to.
+bool StereoEventMatcherImpl::decideByPrior(int c, Point r, int64 t, unsigned bestCost, MatchScratch& s, MatchResult& m) const
+{
+    const std::vector<PixelEstimate>& last = lastEstimate_[c];
+    std::vector<float>& disparities = s.disparities;
+    disparities.clear();
+    const int x0 = std::max(0, r.x - PRIOR_RADIUS), x1 = std::min(size_.width - 1, r.x + PRIOR_RADIUS);
+    for (int y = std::max(0, r.y - PRIOR_RADIUS); y <= std::min(size_.height - 1, r.y + PRIOR_RADIUS); y++)
+    {
+        const PixelEstimate* row = &last[(size_t)y * size_.width];
+        for (int x = x0; x <= x1; x++)
+            if (row[x].disparity >= 0 && t < row[x].until)
+                disparities.push_back(row[x].disparity);
+    }
+    if (disparities.size() < PRIOR_SUPPORT)
+        return false;
+    const size_t mid = disparities.size() / 2;
+    std::nth_element(disparities.begin(), disparities.begin() + (std::ptrdiff_t)mid, disparities.end());
+    const float prior = disparities[mid];
+    int agree = 0;
+    for (float d : disparities)
+        agree += std::abs(d - prior) <= 1.f;
+    const int* const candidates = s.candidates.data();
+    const unsigned* const cost = s.cost.data();
+    int chosen = -1;
+    for (int i = 0; i < s.count; i++)
+        if (std::abs((float)(minDisparity_ + candidates[i]) - prior) <= 1.f && (chosen < 0 || cost[i] < cost[chosen]))
+            chosen = i;
+    if (chosen < 0 || (uint64)cost[chosen] * 100 > (uint64)bestCost * (uint64)(100 + priorTolerance_))
+        return false;
+    const int d = minDisparity_ + candidates[chosen];
+    m.disparity = (float)d;
+    m.counterpartX = r.x + (c == CAMERA_LEFT ? -d : d);
+    m.confidence = (float)agree / (float)disparities.size();
+    if (!consistent(1 - c, m.counterpartX, r.y, d, t, s))
+        m.confidence = 0.f;
+    return true;
 }
 
 // Left-right check against the other sensor's own estimates: the active events around the counterpart

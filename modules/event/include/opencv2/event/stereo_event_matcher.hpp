@@ -31,7 +31,7 @@ enum StereoEventFlags
     STEREO_LIFETIME_MATCHED = 4,    //!< ... as the median lifetime of the matched window of the other sensor
     STEREO_LIFETIME_PREDICTED = 8,  //!< ... by reusing the plane predicted for this pixel (no fit)
     STEREO_NOISE = 16,              //!< no local plane and no match: classified as noise
-    STEREO_AMBIGUOUS = 32,          //!< candidates existed but none passed the uniqueness test
+    STEREO_AMBIGUOUS = 32,          //!< candidates existed, but the best one's confidence is below getMinConfidence()
     STEREO_NO_COUNTERPART = 64,     //!< the other sensor had no active structure along the row (yet)
     STEREO_OUTSIDE = 128            //!< the rectified position lies outside the image: not processed
 };
@@ -43,6 +43,11 @@ struct CV_EXPORTS StereoEventEstimate
     float depth = 0.f;       //!< f B / disparity [m] with a calibration; 0 when unknown
     float lifetime = 0.f;    //!< [us]; 0 when none
     Vec2f flow;              //!< normal optical flow [px/s] of the plane (or of the matched event); 0 when none
+    /** How clearly the best candidate won, 0..1: 1 - its cost / the cost of the best alternative (a candidate
+    more than 1 px away, or no counterpart at all); 0 without candidates or when the left-right check
+    contradicts it. Set also when the estimate is rejected (confidence below StereoEventMatcher::getMinConfidence()),
+    so that a caller can rank all events. FRAME_SGBM: 1 where SGBM gave a disparity, else 0. */
+    float confidence = 0.f;
     int flags = 0;           //!< StereoEventFlags
     Point rectified = Point(-1, -1);  //!< the event's rectified pixel; (-1, -1) when outside
 };
@@ -66,11 +71,26 @@ activate and expire.
 **Cost and decision.** For each disparity d in [min, max] whose candidate pixel has active structure of the
 event's polarity, the cost is the sum over a W x W window of the SADs between the event's descriptors and
 the candidate's; near the border the window is clipped to the event's own image (past it both sensors are
-empty, which would favour candidates that also run past the other border). Aggregation is iterative: while the winner is not unique, the window grows by a ring of
-one pixel, up to A x A. The winner (with sub-pixel parabola refinement) is accepted when its cost is below
-(100 - uniquenessRatio) % of every candidate further than one pixel away and of matching against nothing
-(the window's descriptor mass, on either sensor: "no counterpart yet" is one more hypothesis); otherwise the
-event is flagged ambiguous and gets no disparity rather than a wrong one.
+empty, which would favour candidates that also run past the other border).
+
+**Decision.** The alternatives to the cheapest candidate (the winner) are every candidate further than one
+pixel from it and "no counterpart yet", whose cost is that of matching against nothing (the window's
+descriptor mass, on either sensor). Aggregation is iterative: while the winner does not beat every
+alternative by the uniqueness ratio (its cost below (100 - ratio) % of theirs), the window grows by a ring
+of one pixel, up to A x A. The winner (refined to sub-pixel by a parabola through its neighbours' costs)
+gets a **confidence**, 1 - its cost / the best alternative's cost, set to 0 when the other sensor's own
+estimates around the counterpart disagree by more than a pixel (left-right check). Estimates whose
+confidence is below getMinConfidence() are rejected: the event is flagged STEREO_AMBIGUOUS and gets no
+disparity rather than a likely wrong one, but its confidence is still output. The confidence ranks
+estimates: keeping only the most confident trades density for precision (event_evaluate draws that curve);
+setMinConfidence(0) keeps every event's best estimate.
+
+**Temporal prior.** An edge crosses the sensor a pixel at a time, so what its events were matched to a
+moment ago, nearby, is most often what the next one should be matched to. When the aggregation ends
+without a unique winner (repeated or row-parallel structure), the median disparity of this sensor's still
+active estimates within 5 pixels (at least 3 of them) is the prior: the cheapest candidate within a pixel of
+it wins when its cost is within getPriorTolerance() % of the best's. Its confidence is then the share of
+those estimates within a pixel of the prior (0 when the left-right check contradicts it).
 
 **Modes** (StereoMatchMode), all with the same outputs:
 - COUPLED: the event is matched first; on a match its lifetime is the median lifetime of the active events
@@ -113,10 +133,11 @@ public:
     @param flags output N x 1 CV_32S StereoEventFlags.
     @param depth output N x 1 CV_32F [m] (needs a calibration); 0 where unknown.
     @param flow output N x 2 CV_32F normal flow [px/s]; 0 where none.
+    @param confidence output N x 1 CV_32F, StereoEventEstimate::confidence (0..1), rejected estimates included.
     Time must not go backwards, within a packet or across calls (cv::Exception naming the event). */
     CV_WRAP virtual void process(InputArray events, OutputArray disparity, OutputArray lifetime = noArray(),
                                  OutputArray flags = noArray(), OutputArray depth = noArray(),
-                                 OutputArray flow = noArray()) = 0;
+                                 OutputArray flow = noArray(), OutputArray confidence = noArray()) = 0;
 
     /** @brief The same for one event (all modes but FRAME_SGBM; identical results to process()). */
     virtual void processEvent(const Event& event, StereoEventEstimate& estimate) = 0;
@@ -162,10 +183,19 @@ public:
     /** @brief A, the side of the largest window the iterative aggregation grows to (odd, >= W, at most 31, default 31). */
     CV_WRAP virtual int getAggregationWindow() const = 0;
     CV_WRAP virtual void setAggregationWindow(int a) = 0;
-    /** @brief Margin [%] by which the best cost must beat every other candidate and "no counterpart" (default 15).
-    A higher margin leaves more events STEREO_AMBIGUOUS (lower density) and fewer of the estimates wrong. */
+    /** @brief Margin [%] by which the best cost must beat every other candidate and "no counterpart" for the
+    iterative aggregation to stop growing the window (default 15). A higher margin aggregates over larger
+    windows (slower, smoother); rejection is getMinConfidence()'s. */
     CV_WRAP virtual int getUniquenessRatio() const = 0;
     CV_WRAP virtual void setUniquenessRatio(int ratio) = 0;
+    /** @brief Estimates with a lower confidence (StereoEventEstimate::confidence, 0..1) are rejected: no
+    disparity, STEREO_AMBIGUOUS (default 0.15). 0 keeps every event's best estimate. */
+    CV_WRAP virtual double getMinConfidence() const = 0;
+    CV_WRAP virtual void setMinConfidence(double confidence) = 0;
+    /** @brief Temporal prior: how much more [%] than the best the cost of the candidate at the prior may be
+    for it to win an otherwise ambiguous match (default 30; 0..1000; 0: no prior, the method as published). */
+    CV_WRAP virtual int getPriorTolerance() const = 0;
+    CV_WRAP virtual void setPriorTolerance(int percent) = 0;
     /** @brief FIXED_INTERVAL: how long every event stays active [us] (default 10000); in the other per-event
     modes, the lifetime an event without one is taken to have for its activity during the cold start. */
     CV_WRAP virtual double getFixedInterval() const = 0;
