@@ -165,7 +165,6 @@ void StereoEventMatcherImpl::processAdmitted(const Event& e, Point r, int64 cold
         // activity, which needs no history).
         activeFor = activeSpan(fixedInterval_);
     }
-
     if (activeFor > 0)
         maps_[c].activate(r.x, r.y, p, timeAfter(e.t, activeFor), est.lifetime, est.flow);
     else
@@ -518,7 +517,8 @@ void StereoEventMatcherImpl::write(FileStorage& fs) const
     fs << "mode" << getStereoModeName(mode_) << "sensorWidth" << size_.width << "sensorHeight" << size_.height
        << "minDisparity" << minDisparity_ << "maxDisparity" << maxDisparity_ << "descriptorWindow" << descriptorWindow_
        << "maxVectorLength" << maxVectorLength_ << "costWindow" << costWindow_ << "aggregationWindow"
-       << aggregationWindow_ << "uniquenessRatio" << uniquenessRatio_ << "minConfidence" << minConfidence_ << "priorTolerance" << priorTolerance_ << "fixedInterval" << (double)fixedInterval_
+       << aggregationWindow_ << "uniquenessRatio" << uniquenessRatio_ << "minConfidence" << minConfidence_
+       << "priorTolerance" << priorTolerance_ << "fixedInterval" << (double)fixedInterval_
        << "frameWindow" << (double)frameWindow_ << "maxLifetime" << (double)maxLifetime_ << "activeDistance"
        << activeDistance_;
     fs << "lifetimeEstimator" << "{";
@@ -605,8 +605,8 @@ void StereoEventMatcherImpl::setDisparityRange(int lo, int hi)
 // fit's window. Operations further apart in rows than the sum of their reaches touch disjoint state.
 int StereoEventMatcherImpl::eventRowReach() const
 {
-    return std::max({ aggregationWindow_ / 2, costWindow_ / 2, 1, (int)PRIOR_RADIUS, expiryRowReach(), lifetimeRowReach(*estimators_[0]),
-                      lifetimeRowReach(*estimators_[1]) });
+    return std::max({ aggregationWindow_ / 2, costWindow_ / 2, 1, (int)PRIOR_RADIUS, expiryRowReach(),
+                      lifetimeRowReach(*estimators_[0]), lifetimeRowReach(*estimators_[1]) });
 }
 
 // ---- rendering

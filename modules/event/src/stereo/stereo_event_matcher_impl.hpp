@@ -169,7 +169,8 @@ private:
     // How many rows above and below its own an event's processing reads or writes: the aggregation window's
     // descriptors (match), the matched window (its median lifetime), the left-right check's 3 x 3, the
     // temporal prior's neighbourhood, the vectors an activation or deactivation changes (2 x the max length
-    // for the re-search) and their votes, the plane fit's window. Operations further apart in rows than the sum of their reaches touch disjoint state.
+    // for the re-search) and their votes, the plane fit's window. Operations further apart in rows than the
+    // sum of their reaches touch disjoint state.
     int eventRowReach() const;
 
     // The same for an expiry (a deactivation).
@@ -209,6 +210,11 @@ private:
     // were matched the other way (toward this sensor); when they have disparities, their median must agree
     // within one pixel. Without any there is nothing to contradict the match.
     bool consistent(int c, int x, int y, double d, int64 t, MatchScratch& s) const;
+
+    // The disparities of sensor c's estimates still active at time t within `radius` pixels of `centre` (into
+    // s.disparities), their count and, when there are any, their median: what the left-right check and the
+    // temporal prior read.
+    size_t activeEstimateMedian(int c, Point centre, int radius, int64 t, MatchScratch& s, float& median) const;
 
     // Median lifetime (and the flow of that event) of the active events of polarity p in the cost window
     // around (x, y) of sensor c. False when none has a lifetime.

@@ -156,25 +156,10 @@ MatchResult StereoEventMatcherImpl::match(int c, Point r, int p, int64 t, MatchS
 // were matched to a moment ago, nearby, is most often what the next one should be matched to.
 bool StereoEventMatcherImpl::decideByPrior(int c, Point r, int64 t, unsigned bestCost, MatchScratch& s, MatchResult& m) const
 {
-    const std::vector<PixelEstimate>& last = lastEstimate_[c];
-    std::vector<float>& disparities = s.disparities;
-    disparities.clear();
-    const int x0 = std::max(0, r.x - PRIOR_RADIUS), x1 = std::min(size_.width - 1, r.x + PRIOR_RADIUS);
-    for (int y = std::max(0, r.y - PRIOR_RADIUS); y <= std::min(size_.height - 1, r.y + PRIOR_RADIUS); y++)
-    {
-        const PixelEstimate* row = &last[(size_t)y * size_.width];
-        for (int x = x0; x <= x1; x++)
-            if (row[x].disparity >= 0 && t < row[x].until)
-                disparities.push_back(row[x].disparity);
-    }
-    if (disparities.size() < PRIOR_SUPPORT)
+    float prior;
+    const size_t support = activeEstimateMedian(c, r, PRIOR_RADIUS, t, s, prior);
+    if (support < PRIOR_SUPPORT)
         return false;
-    const size_t mid = disparities.size() / 2;
-    std::nth_element(disparities.begin(), disparities.begin() + (std::ptrdiff_t)mid, disparities.end());
-    const float prior = disparities[mid];
-    int agree = 0;
-    for (float d : disparities)
-        agree += std::abs(d - prior) <= 1.f;
     const int* const candidates = s.candidates.data();
     const unsigned* const cost = s.cost.data();
     int chosen = -1;
@@ -183,10 +168,13 @@ bool StereoEventMatcherImpl::decideByPrior(int c, Point r, int64 t, unsigned bes
             chosen = i;
     if (chosen < 0 || (uint64)cost[chosen] * 100 > (uint64)bestCost * (uint64)(100 + priorTolerance_))
         return false;
+    int agree = 0;  // s.disparities still holds the neighbourhood: consistent() below reuses it
+    for (float v : s.disparities)
+        agree += std::abs(v - prior) <= 1.f;
     const int d = minDisparity_ + candidates[chosen];
     m.disparity = (float)d;
     m.counterpartX = r.x + (c == CAMERA_LEFT ? -d : d);
-    m.confidence = (float)agree / (float)disparities.size();
+    m.confidence = (float)agree / (float)support;
     if (!consistent(1 - c, m.counterpartX, r.y, d, t, s))
         m.confidence = 0.f;
     return true;
@@ -197,21 +185,31 @@ bool StereoEventMatcherImpl::decideByPrior(int c, Point r, int64 t, unsigned bes
 // within one pixel. Without any there is nothing to contradict the match.
 bool StereoEventMatcherImpl::consistent(int c, int x, int y, double d, int64 t, MatchScratch& s) const
 {
+    float median;
+    return activeEstimateMedian(c, Point(x, y), 1, t, s, median) == 0 || std::abs(median - d) <= 1.0;
+}
+
+// The disparities of sensor c's estimates still active at time t within `radius` pixels of `centre` (into
+// s.disparities, in no particular order), their count and, when there are any, their median.
+size_t StereoEventMatcherImpl::activeEstimateMedian(int c, Point centre, int radius, int64 t, MatchScratch& s, float& median) const
+{
     const std::vector<PixelEstimate>& last = lastEstimate_[c];
     std::vector<float>& disparities = s.disparities;
     disparities.clear();
-    for (int yy = std::max(0, y - 1); yy <= std::min(size_.height - 1, y + 1); yy++)
-        for (int xx = std::max(0, x - 1); xx <= std::min(size_.width - 1, x + 1); xx++)
-        {
-            const size_t i = (size_t)yy * size_.width + xx;
-            if (last[i].disparity >= 0 && t < last[i].until)
-                disparities.push_back(last[i].disparity);
-        }
+    const int x0 = std::max(0, centre.x - radius), x1 = std::min(size_.width - 1, centre.x + radius);
+    for (int y = std::max(0, centre.y - radius); y <= std::min(size_.height - 1, centre.y + radius); y++)
+    {
+        const PixelEstimate* row = &last[(size_t)y * size_.width];
+        for (int x = x0; x <= x1; x++)
+            if (row[x].disparity >= 0 && t < row[x].until)
+                disparities.push_back(row[x].disparity);
+    }
     if (disparities.empty())
-        return true;
+        return 0;
     const size_t mid = disparities.size() / 2;
     std::nth_element(disparities.begin(), disparities.begin() + (std::ptrdiff_t)mid, disparities.end());
-    return std::abs(disparities[mid] - d) <= 1.0;
+    median = disparities[mid];
+    return disparities.size();
 }
 
 // Median lifetime (and the flow of that event) of the active events of polarity p in the cost window
