@@ -167,6 +167,7 @@ TEST(Event_Extremes, all_events_at_one_pixel)
     for (int mode : kStereoModes)
     {
         Ptr<StereoEventMatcher> m = StereoEventMatcher::create(size, mode);
+        m->setLookAhead(0);  // decided on arrival: an event sees only the events before it
         Mat d, slt, flags, depth, sflow;
         m->process(stereo, d, slt, flags, depth, sflow);
         const std::string name = getStereoModeName(mode);
@@ -190,6 +191,21 @@ TEST(Event_Extremes, all_events_at_one_pixel)
         }
         EXPECT_EQ(countNonZero(slt), 0) << name << ": no plane through one pixel";
     }
+    // With look-ahead each pixel's events that have arrived but are not decided yet stay visible: after the
+    // cold start every event with a later one of the other sensor within the look-ahead matches, at d = 6.
+    Ptr<StereoEventMatcher> ahead = StereoEventMatcher::create(size, STEREO_COUPLED);
+    ahead->setLookAhead(1000);
+    Mat d;
+    ahead->process(stereo, d);
+    int matchedAfterColdStart = 0;
+    for (int i = 0; i < d.rows; i++)
+        if (d.at<float>(i) >= 0 && stereo[(size_t)i].t >= coldEnd)
+        {
+            matchedAfterColdStart++;
+            ASSERT_NEAR(d.at<float>(i), 6.0, 0.5) << "event " << i;
+        }
+    EXPECT_GE(matchedAfterColdStart, 2 * (int)std::count_if(stereo.begin(), stereo.end(), [&](const Event& e) {
+                  return e.camera == CAMERA_LEFT && e.t >= coldEnd && e.t + 1000 <= stereo.back().t; }) * 9 / 10);
 }
 
 TEST(Event_Extremes, single_event_and_empty_packets)

@@ -3,73 +3,14 @@
 // of this distribution and at http://opencv.org/license.html.
 
 #include "test_precomp.hpp"
-
-#include <functional>
+#include "test_stereo_scene_runs.hpp"
 
 namespace opencv_test { namespace {
-
-// One COUPLED run over a simulated scene, per event: the outputs and the ground truth.
-struct ConfidenceRun
-{
-    std::vector<float> disparity, confidence, truth;
-    std::vector<int> flags, truthFlags, camera;
-};
-
-ConfidenceRun runScene(const std::string& scene, double ms, const std::function<void(StereoEventMatcher&)>& configure)
-{
-    Ptr<StereoEventSimulator> sim = StereoEventSimulator::create(scene);
-    Ptr<StereoEventMatcher> m = StereoEventMatcher::create(sim->getSensorSize(), STEREO_COUPLED);
-    configure(*m);
-    ConfidenceRun run;
-    std::vector<Event> ev;
-    Mat gt, d, fl, conf;
-    for (double t = 20000; t <= ms * 1000 + 1; t += 20000)
-    {
-        sim->generate(t, ev, gt);
-        m->process(ev, d, noArray(), fl, noArray(), noArray(), conf);
-        for (int i = 0; i < (int)ev.size(); i++)
-        {
-            run.disparity.push_back(d.at<float>(i));
-            run.confidence.push_back(conf.at<float>(i));
-            run.flags.push_back(fl.at<int>(i));
-            run.truth.push_back(gt.at<float>(i, GT_DISPARITY));
-            run.truthFlags.push_back((int)gt.at<float>(i, GT_FLAGS));
-            run.camera.push_back(ev[(size_t)i].camera);
-        }
-    }
-    return run;
-}
-
-// Left signal events within 1 px of the truth, over all left signal events [%].
-double matchingRate(const ConfidenceRun& r)
-{
-    int64 all = 0, matched = 0;
-    for (size_t i = 0; i < r.disparity.size(); i++)
-        if (r.camera[i] == CAMERA_LEFT && !(r.truthFlags[i] & GT_FLAG_NOISE))
-        {
-            all++;
-            matched += r.disparity[i] > 0 && std::abs(r.disparity[i] - r.truth[i]) <= 1;
-        }
-    return 100.0 * (double)matched / (double)std::max<int64>(1, all);
-}
-
-// Estimates of non-occluded signal events within 1 px of the truth [%].
-double within1(const ConfidenceRun& r)
-{
-    int64 estimated = 0, good = 0;
-    for (size_t i = 0; i < r.disparity.size(); i++)
-        if (!(r.truthFlags[i] & (GT_FLAG_NOISE | GT_FLAG_OCCLUDED)) && r.disparity[i] >= 0)
-        {
-            estimated++;
-            good += std::abs(r.disparity[i] - r.truth[i]) <= 1;
-        }
-    return 100.0 * (double)good / (double)std::max<int64>(1, estimated);
-}
 
 TEST(StereoEventMatcher_Confidence, rejection_is_the_threshold_and_the_confidence_ranks_the_estimates)
 {
     const double threshold = 0.15;
-    const ConfidenceRun kept = runScene("boxes", 400, [&](StereoEventMatcher& m) { m.setMinConfidence(threshold); });
+    const SceneRun kept = runScene("boxes", 400, [&](StereoEventMatcher& m) { m.setMinConfidence(threshold); });
     int64 withDisparity = 0, rejected = 0;
     for (size_t i = 0; i < kept.flags.size(); i++)
     {
@@ -86,19 +27,23 @@ TEST(StereoEventMatcher_Confidence, rejection_is_the_threshold_and_the_confidenc
             EXPECT_LT(kept.disparity[i], 0) << "event " << i;
         }
         if (f & (STEREO_NO_COUNTERPART | STEREO_OUTSIDE))
+        {
             EXPECT_EQ(kept.confidence[i], 0.f) << "event " << i;
+        }
     }
     EXPECT_GT(withDisparity, 1000);
     EXPECT_GT(rejected, 100);
 
     // Threshold 0: every event with a candidate keeps its best estimate.
-    const ConfidenceRun all = runScene("boxes", 400, [](StereoEventMatcher& m) { m.setMinConfidence(0); });
+    const SceneRun all = runScene("boxes", 400, [](StereoEventMatcher& m) { m.setMinConfidence(0); });
     std::vector<std::pair<float, bool>> ranked;  // non-occluded signal events: confidence, within 1 px
     for (size_t i = 0; i < all.flags.size(); i++)
     {
         EXPECT_FALSE(all.flags[i] & STEREO_AMBIGUOUS) << "event " << i;
         if (!(all.flags[i] & (STEREO_NO_COUNTERPART | STEREO_OUTSIDE)))
+        {
             EXPECT_GE(all.disparity[i], 0) << "event " << i;
+        }
         if (!(all.truthFlags[i] & (GT_FLAG_NOISE | GT_FLAG_OCCLUDED)) && all.disparity[i] >= 0)
             ranked.push_back(std::make_pair(all.confidence[i], std::abs(all.disparity[i] - all.truth[i]) <= 1));
     }
@@ -119,8 +64,8 @@ TEST(StereoEventMatcher_Confidence, rejection_is_the_threshold_and_the_confidenc
 // leaves the winner ambiguous gets decided by the neighbours' recent estimates.
 TEST(StereoEventMatcher_Confidence, temporal_prior_raises_the_matching_rate_on_sparse_edges)
 {
-    const ConfidenceRun without = runScene("boxes", 600, [](StereoEventMatcher& m) { m.setPriorTolerance(0); });
-    const ConfidenceRun with = runScene("boxes", 600, [](StereoEventMatcher& m) { m.setPriorTolerance(30); });
+    const SceneRun without = runScene("boxes", 600, [](StereoEventMatcher& m) { m.setPriorTolerance(0); });
+    const SceneRun with = runScene("boxes", 600, [](StereoEventMatcher& m) { m.setPriorTolerance(30); });
     std::cout << "boxes: matching rate " << matchingRate(without) << " % without the prior, " << matchingRate(with)
               << " % with it; within 1 px of estimated " << within1(without) << " / " << within1(with) << " %" << std::endl;
     EXPECT_GT(matchingRate(with), matchingRate(without) + 3);

@@ -248,6 +248,7 @@ TEST(StereoEventMatcher, process_and_processEvent_agree_and_runs_repeat)
     for (int mode : { (int)STEREO_COUPLED, (int)STEREO_DECOUPLED, (int)STEREO_FIXED_INTERVAL })
     {
         Ptr<StereoEventMatcher> batch = StereoEventMatcher::create(sim->getSensorSize(), mode);
+        batch->setLookAhead(0);  // processEvent() decides each event when it arrives
         Ptr<StereoEventMatcher> single = StereoEventMatcher::create(sim->getSensorSize(), mode);
         Mat d, lt, fl, confidence;
         batch->process(ev, d, lt, fl, noArray(), noArray(), confidence);

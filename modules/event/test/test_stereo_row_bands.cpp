@@ -14,12 +14,13 @@ struct RunOutputs
 };
 
 RunOutputs runMatcher(const std::vector<std::vector<Event>>& packets, Size size, int mode, int threads,
-                      const StereoCalibration& calibration = StereoCalibration())
+                      const StereoCalibration& calibration = StereoCalibration(), double lookAhead = 10000)
 {
     Ptr<StereoEventMatcher> m = StereoEventMatcher::create(size, mode);
     if (!calibration.empty())
         m->setCalibration(calibration);
     m->setNumThreads(threads);
+    m->setLookAhead(lookAhead);
     RunOutputs out;
     for (const std::vector<Event>& ev : packets)
     {
@@ -74,6 +75,11 @@ TEST_P(StereoEventMatcher_RowBands, give_the_results_of_one_thread_bit_for_bit)
     for (int threads : { 2, 3, 2, 7 })
         EXPECT_EQ(differingOutputs(one, runMatcher(packets, size, mode, threads)), 0)
             << scene << ", " << getStereoModeName(mode) << ", " << threads << " threads";
+    // Without look-ahead (each event decided on arrival, one operation per event).
+    const RunOutputs onArrival = runMatcher(packets, size, mode, 1, StereoCalibration(), 0);
+    EXPECT_GT(differingOutputs(one, onArrival), 0) << "the look-ahead must change something";
+    EXPECT_EQ(differingOutputs(onArrival, runMatcher(packets, size, mode, 3, StereoCalibration(), 0)), 0)
+        << scene << ", " << getStereoModeName(mode) << ", no look-ahead, 3 threads";
 }
 
 INSTANTIATE_TEST_CASE_P(/**/, StereoEventMatcher_RowBands,

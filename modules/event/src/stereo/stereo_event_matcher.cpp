@@ -83,9 +83,9 @@ void StereoEventMatcherImpl::process(InputArray events, OutputArray disparity, O
         processFrames(ev, store);
         return;
     }
-    if (numThreads_ > 1 && n >= MIN_EVENTS_FOR_BANDS)
+    if (lookAhead_ > 0 || (numThreads_ > 1 && n >= MIN_EVENTS_FOR_BANDS))
     {
-        processInBands(ev, store);
+        processOperations(ev, store);
         return;
     }
     StereoEventEstimate s;
@@ -111,13 +111,14 @@ void StereoEventMatcherImpl::processEvent(const Event& e, StereoEventEstimate& e
     }
     maps_[0].expireUntil(e.t);
     maps_[1].expireUntil(e.t);
-    processAdmitted(e, r, coldStartEnd_, scratch_, est);
+    processAdmitted(e, r, coldStartEnd_, false, scratch_, est);
     addStatusCounts(*estimators_[e.camera], scratch_.lifetimes[e.camera]);
 }
 
 // processEvent after admit() and the expiries due: the event at rectified pixel r, inside the image.
-// Reads and writes only rows within eventRowReach() of r.y, with its own scratch: see processInBands().
-void StereoEventMatcherImpl::processAdmitted(const Event& e, Point r, int64 coldStartEnd, MatchScratch& s, StereoEventEstimate& est)
+// Reads and writes only rows within eventRowReach() of r.y, with its own scratch: see processOperations().
+void StereoEventMatcherImpl::processAdmitted(const Event& e, Point r, int64 coldStartEnd, bool laterPending, MatchScratch& s,
+                                             StereoEventEstimate& est)
 {
     const int c = e.camera, p = e.p ? 1 : 0;
     Event re = e;
@@ -165,10 +166,15 @@ void StereoEventMatcherImpl::processAdmitted(const Event& e, Point r, int64 cold
         // activity, which needs no history).
         activeFor = activeSpan(fixedInterval_);
     }
-    if (activeFor > 0)
-        maps_[c].activate(r.x, r.y, p, timeAfter(e.t, activeFor), est.lifetime, est.flow);
-    else
-        maps_[c].deactivate(r.x, r.y, p);
+    // A later event of this pixel and polarity, already in the map (look-ahead), keeps it active until its
+    // own decision.
+    if (!laterPending)
+    {
+        if (activeFor > 0)
+            maps_[c].activate(r.x, r.y, p, timeAfter(e.t, activeFor), est.lifetime, est.flow);
+        else
+            maps_[c].deactivate(r.x, r.y, p);
+    }
 
     if (est.disparity >= 0)
     {
@@ -277,8 +283,9 @@ void StereoEventMatcherImpl::processFrames(const Mat_<Event>& ev, const StoreFn&
 }
 
 // The admission runs here in order (the checks, the rectified pixel and the cold start depend on the events
-// before); the events and expiries run in row bands, ordered by RowBandScheduler as on one thread.
-void StereoEventMatcherImpl::processInBands(const Mat_<Event>& ev, const StoreFn& store)
+// before); then the packet's operations (scheduleOperations) run in that order on one thread, or in row bands
+// ordered by RowBandScheduler as on one thread.
+void StereoEventMatcherImpl::processOperations(const Mat_<Event>& ev, const StoreFn& store)
 {
     const int n = (int)ev.total();
     admitted_.resize((size_t)n);
@@ -311,52 +318,140 @@ void StereoEventMatcherImpl::processInBands(const Mat_<Event>& ev, const StoreFn
             store(i, outside);
         }
     }
-    const int reach = eventRowReach();
-    const int bands = std::max(1, std::min(numThreads_, size_.height / (2 * reach + 1)));
-    const std::vector<int> first = RowBandScheduler::splitRows(admittedRows_, valid, size_.height, bands, 2 * reach + 1);
-    maps_[0].setRowBands(first);
-    maps_[1].setRowBands(first);
-    if (bandScratch_.size() < (size_t)bands)
-    {
-        bandScratch_.resize((size_t)bands);
-        for (MatchScratch& s : bandScratch_)
-            sizeScratch(s);
-    }
-    RowBandScheduler::Operations ops;
-    // The band's earliest expiry over both maps (the left map's first on a tie); the token is the map.
-    ops.earliestExpiry = [this](int b, int64& time, int& row, int& map) {
-        bool found = false;
-        time = std::numeric_limits<int64>::max();
-        for (int c = 0; c < 2; c++)
-        {
-            int64 t;
-            int y;
-            if (maps_[c].earliestExpiry(b, t, y) && t < time)
-            {
-                map = c;
-                time = t;
-                row = y;
-                found = true;
-            }
-        }
-        return found;
-    };
-    ops.expire = [this](int b, int map) { maps_[map].expireEarliest(b); };
-    ops.process = [&](int b, int i) {
+    scheduleOperations(valid);
+    const int count = (int)operations_.size();
+    // Decision: the event's match, lifetime and final activity (processEvent after admission). Arrival (look-ahead
+    // only): the event becomes active in its sensor's map, for the decisions of the events before it.
+    auto run = [&](int k, MatchScratch& s) {
+        const int i = operations_[(size_t)k] >> 1;
+        const Event& e = ev(i);
         const Admission& a = admitted_[(size_t)i];
+        const size_t pixel = ((size_t)a.rectified.y * size_.width + a.rectified.x) * 2 + (e.p ? 1 : 0);
+        if (!(operations_[(size_t)k] & 1))
+        {
+            maps_[e.camera].activate(a.rectified.x, a.rectified.y, e.p ? 1 : 0, std::numeric_limits<int64>::max(), 0.f, Vec2f());
+            pendingEvents_[e.camera][pixel]++;
+            return;
+        }
+        const bool laterPending = lookAhead_ > 0 && --pendingEvents_[e.camera][pixel] > 0;
         StereoEventEstimate est;
         est.rectified = a.rectified;
-        processAdmitted(ev(i), a.rectified, a.coldStartEnd, bandScratch_[(size_t)b], est);
+        processAdmitted(e, a.rectified, a.coldStartEnd, laterPending, s, est);
         store(i, est);
     };
-    const std::exception_ptr failure = bands_.run(first, size_.height, reach, expiryRowReach(), admittedRows_, times_, valid, ops);
-    for (int b = 0; b < bands; b++)
+    std::exception_ptr failure;
+    if (numThreads_ == 1 || n < MIN_EVENTS_FOR_BANDS)
+    {
+        try
+        {
+            for (int k = 0; k < count; k++)
+            {
+                if (operations_[(size_t)k] & 1)
+                {
+                    maps_[0].expireUntil(operationTimes_[(size_t)k]);
+                    maps_[1].expireUntil(operationTimes_[(size_t)k]);
+                }
+                run(k, scratch_);
+            }
+        }
+        catch (...)
+        {
+            failure = std::current_exception();
+        }
         for (int c = 0; c < 2; c++)
-            addStatusCounts(*estimators_[c], bandScratch_[(size_t)b].lifetimes[c]);
+            addStatusCounts(*estimators_[c], scratch_.lifetimes[c]);
+    }
+    else
+    {
+        const int reach = eventRowReach();
+        const int bands = std::max(1, std::min(numThreads_, size_.height / (2 * reach + 1)));
+        const std::vector<int> first = RowBandScheduler::splitRows(operationRows_, count, size_.height, bands, 2 * reach + 1);
+        maps_[0].setRowBands(first);
+        maps_[1].setRowBands(first);
+        if (bandScratch_.size() < (size_t)bands)
+        {
+            bandScratch_.resize((size_t)bands);
+            for (MatchScratch& s : bandScratch_)
+                sizeScratch(s);
+        }
+        RowBandScheduler::Operations ops;
+        // The band's earliest expiry over both maps (the left map's first on a tie); the token is the map.
+        ops.earliestExpiry = [this](int b, int64& time, int& row, int& map) {
+            bool found = false;
+            time = std::numeric_limits<int64>::max();
+            for (int c = 0; c < 2; c++)
+            {
+                int64 t;
+                int y;
+                if (maps_[c].earliestExpiry(b, t, y) && t < time)
+                {
+                    map = c;
+                    time = t;
+                    row = y;
+                    found = true;
+                }
+            }
+            return found;
+        };
+        ops.expire = [this](int b, int map) { maps_[map].expireEarliest(b); };
+        ops.process = [&](int b, int k) { run(k, bandScratch_[(size_t)b]); };
+        failure = bands_.run(first, size_.height, reach, expiryRowReach(), operationRows_, operationTimes_, count, ops);
+        for (int b = 0; b < bands; b++)
+            for (int c = 0; c < 2; c++)
+                addStatusCounts(*estimators_[c], bandScratch_[(size_t)b].lifetimes[c]);
+    }
     if (failure)
+    {
+        // Arrivals after the failure are never decided: none stays pending.
+        for (std::vector<int>& pending : pendingEvents_)
+            std::fill(pending.begin(), pending.end(), 0);
         std::rethrow_exception(failure);
+    }
     if (badEvent)
         std::rethrow_exception(badEvent);
+}
+
+// The operations of the first `valid` admitted events, in the order one thread runs them, with their rows and
+// times (the scheduler takes the expiries due before the first operation at or after their time: the single
+// thread's expiries before a decision). Without look-ahead an event is decided when it arrives. With it, an
+// event arrives (becomes active in its map) in stream order and is decided once an event more than
+// lookAhead_ later has arrived, or at the end of the packet; an arrival carries the time of the decision
+// before it, so that no expiry moves before it.
+void StereoEventMatcherImpl::scheduleOperations(int valid)
+{
+    operations_.clear();
+    operationRows_.clear();
+    operationTimes_.clear();
+    auto add = [&](int i, bool decide, int64 t) {
+        operations_.push_back(i * 2 + (decide ? 1 : 0));
+        operationRows_.push_back(admittedRows_[(size_t)i]);
+        operationTimes_.push_back(t);
+    };
+    if (lookAhead_ == 0)
+    {
+        for (int i = 0; i < valid; i++)
+            if (admittedRows_[(size_t)i] >= 0)
+                add(i, true, times_[(size_t)i]);
+        return;
+    }
+    int64 decided = std::numeric_limits<int64>::min();
+    size_t next = 0;  // the first arrived event not yet decided, in operations_ (arrivals are in event order)
+    std::vector<int>& arrived = arrivedEvents_;
+    arrived.clear();
+    for (int j = 0; j < valid; j++)
+    {
+        if (admittedRows_[(size_t)j] < 0)
+            continue;
+        for (; next < arrived.size() && timeAfter(times_[(size_t)arrived[next]], lookAhead_) < times_[(size_t)j]; next++)
+        {
+            decided = times_[(size_t)arrived[next]];
+            add(arrived[next], true, decided);
+        }
+        add(j, false, decided);
+        arrived.push_back(j);
+    }
+    for (; next < arrived.size(); next++)
+        add(arrived[next], true, times_[(size_t)arrived[next]]);
 }
 
 // ---- parameters
@@ -370,6 +465,7 @@ void StereoEventMatcherImpl::reset()
         estimators_[c]->reset();
         lastEstimate_[c].assign((size_t)size_.area(), PixelEstimate());
         lastEventTime_[c].assign((size_t)size_.area(), 0);
+        pendingEvents_[c].assign((size_t)size_.area() * 2, 0);
     }
     frames_.configure(size_, minDisparity_, maxDisparity_, frameWindow_);
     lastTime_ = std::numeric_limits<int64>::min();
@@ -490,6 +586,14 @@ void StereoEventMatcherImpl::setPriorTolerance(int percent)
     priorTolerance_ = percent;
 }
 
+void StereoEventMatcherImpl::setLookAhead(double us)
+{
+    if (!(us >= 0 && us <= 1e6))
+        CV_Error_(Error::StsBadArg, ("StereoEventMatcher: look-ahead %g us; must be 0..1e6 us (0: each event is decided "
+                                     "when it arrives)", us));
+    lookAhead_ = (int64)std::llround(us);
+}
+
 void StereoEventMatcherImpl::setFrameWindow(double us)
 {
     frameWindow_ = duration(us, "frame window");
@@ -518,7 +622,7 @@ void StereoEventMatcherImpl::write(FileStorage& fs) const
        << "minDisparity" << minDisparity_ << "maxDisparity" << maxDisparity_ << "descriptorWindow" << descriptorWindow_
        << "maxVectorLength" << maxVectorLength_ << "costWindow" << costWindow_ << "aggregationWindow"
        << aggregationWindow_ << "uniquenessRatio" << uniquenessRatio_ << "minConfidence" << minConfidence_
-       << "priorTolerance" << priorTolerance_ << "fixedInterval" << (double)fixedInterval_
+       << "priorTolerance" << priorTolerance_ << "lookAhead" << (double)lookAhead_ << "fixedInterval" << (double)fixedInterval_
        << "frameWindow" << (double)frameWindow_ << "maxLifetime" << (double)maxLifetime_ << "activeDistance"
        << activeDistance_;
     fs << "lifetimeEstimator" << "{";
@@ -554,6 +658,7 @@ void StereoEventMatcherImpl::read(const FileNode& fn)
     setUniquenessRatio((int)num("uniquenessRatio", uniquenessRatio_));
     setMinConfidence(num("minConfidence", minConfidence_));
     setPriorTolerance((int)num("priorTolerance", priorTolerance_));
+    setLookAhead(num("lookAhead", (double)lookAhead_));
     setFixedInterval(num("fixedInterval", (double)fixedInterval_));
     setFrameWindow(num("frameWindow", (double)frameWindow_));
     setMaxLifetime(num("maxLifetime", (double)maxLifetime_));

@@ -110,6 +110,9 @@ public:
     int getPriorTolerance() const CV_OVERRIDE { return priorTolerance_; }
 
     void setPriorTolerance(int percent) CV_OVERRIDE;
+    double getLookAhead() const CV_OVERRIDE { return (double)lookAhead_; }
+
+    void setLookAhead(double us) CV_OVERRIDE;
     double getFixedInterval() const CV_OVERRIDE { return (double)fixedInterval_; }
 
     void setFixedInterval(double us) CV_OVERRIDE { fixedInterval_ = duration(us, "fixed interval"); }
@@ -145,8 +148,11 @@ private:
 
     // ---- pipeline (stereo_event_matcher.cpp)
     // processEvent after admit() and the expiries due: the event at rectified pixel r, inside the image.
-    // Reads and writes only rows within eventRowReach() of r.y, with its own scratch: see processInBands().
-    void processAdmitted(const Event& e, Point r, int64 coldStartEnd, MatchScratch& s, StereoEventEstimate& est);
+    // Reads and writes only rows within eventRowReach() of r.y, with its own scratch: see processOperations().
+    // laterPending: a later event of the same pixel and polarity has arrived (look-ahead) and keeps the pixel
+    // active in the map.
+    void processAdmitted(const Event& e, Point r, int64 coldStartEnd, bool laterPending, MatchScratch& s,
+                         StereoEventEstimate& est);
 
     void sizeScratch(MatchScratch& s) const;
     static void checkMode(int mode);
@@ -180,8 +186,12 @@ private:
     int colourIndex(float d) const;
 
     void processFrames(const Mat_<Event>& ev, const StoreFn& store);
-    // process() on several threads with the results of one: see RowBandScheduler.
-    void processInBands(const Mat_<Event>& ev, const StoreFn& store);
+    // process() with look-ahead or on several threads (with the results of one: see RowBandScheduler): the
+    // packet's admission, then its operations.
+    void processOperations(const Mat_<Event>& ev, const StoreFn& store);
+    // The packet's operations (into operations_: event index x 2 + 1 for a decision, + 0 for an arrival) with
+    // their rows and times, for the first `valid` events of the admission.
+    void scheduleOperations(int valid);
 
     // ---- matching core (stereo_event_matching.cpp)
     // Adds the SAD over the rectangle [x0, x1] x [y0, y1] (relative to the event) to every candidate's cost;
@@ -228,6 +238,7 @@ private:
     double activeDistance_ = 2.5;
     double minConfidence_ = 0.15;
     int priorTolerance_ = 30;
+    int64 lookAhead_ = 10000;
     StereoCalibration calibration_;
     std::vector<int> lut_[2];  // raw pixel -> rectified pixel index (-1: outside); empty: no calibration
     double focalBaseline_ = 0;
@@ -242,7 +253,7 @@ private:
     DescriptorRectSadBatchFn rectSadBatch_ = descriptorRectSadBatchFunction();
     MatchScratch scratch_;  // processEvent's
     int numThreads_ = 1;
-    // processInBands: the scheduler, each band's scratch, each event's admission.
+    // processOperations: the scheduler, each band's scratch, each event's admission, the operations.
     struct Admission
     {
         Point rectified;
@@ -253,6 +264,10 @@ private:
     std::vector<Admission> admitted_;
     std::vector<int> admittedRows_;
     std::vector<int64> times_;
+    std::vector<int> operations_, operationRows_, arrivedEvents_;
+    std::vector<int64> operationTimes_;
+    // Per sensor, pixel and polarity: arrived events not decided yet (look-ahead).
+    std::vector<int> pendingEvents_[2];
 };
 
 }  // namespace detail

@@ -57,11 +57,12 @@ struct CV_EXPORTS StereoEventEstimate
 
 Events of both sensors come in one time-ordered stream (Event::camera tells them apart, see
 mergeStereoEvents / EventCapture::openStereo); each is rectified through a per-pixel lookup table built from
-the calibration (none: the input is taken as rectified) and matched, when it arrives, against what the other
-sensor shows at that moment, so either sensor's events may come first.
+the calibration (none: the input is taken as rectified) and matched against what the other sensor shows
+getLookAhead() later (10 ms by default; see there), so either sensor's events may come first.
 
 **Descriptor.** Each sensor keeps, per pixel and polarity, the vector to the nearest *active* event (an
-event is active from its timestamp until timestamp + lifetime; only events up to the current time exist).
+event is active from its arrival until it is decided, then, with a lifetime, until timestamp + a few lifetimes;
+see Activity).
 Vectors longer than the maximum vector length are dropped: far vectors would otherwise fill the histograms
 with scene layout instead of local structure. The descriptor of a pixel is the histogram of the vectors of
 the N x N window around it over 12 orientation bins of 30 degrees per polarity (24 values; a pixel that is
@@ -107,6 +108,7 @@ those estimates within a pixel of the prior (0 when the left-right check contrad
 **Activity** (COUPLED, DECOUPLED): an event with a lifetime stays active for getActiveDistance() lifetimes
 (2.5 by default; the paper has 1), so each edge leaves a trail of 2.5 px in the descriptors: more of each
 edge to match, and more lifetimes for a weak sensor's events. Set 1 for the paper's method as published.
+Between its arrival and its decision (getLookAhead()) every event is active.
 
 **Cold start** (COUPLED, DECOUPLED): for one time window of the plane fit after the first event (after
 create() or reset(), or after a gap in the stream longer than that window), the surface cannot yet hold the
@@ -139,7 +141,8 @@ public:
                                  OutputArray flags = noArray(), OutputArray depth = noArray(),
                                  OutputArray flow = noArray(), OutputArray confidence = noArray()) = 0;
 
-    /** @brief The same for one event (all modes but FRAME_SGBM; identical results to process()). */
+    /** @brief The same for one event, decided at once (all modes but FRAME_SGBM; identical results to
+    process() with getLookAhead() = 0). */
     virtual void processEvent(const Event& event, StereoEventEstimate& estimate) = 0;
 
     /** @brief Colour-coded disparity of the events of @p camera active at time @p t [us] (the paper's
@@ -196,6 +199,17 @@ public:
     for it to win an otherwise ambiguous match (default 30; 0..1000; 0: no prior, the method as published). */
     CV_WRAP virtual int getPriorTolerance() const = 0;
     CV_WRAP virtual void setPriorTolerance(int percent) = 0;
+    /** @brief Look-ahead L [us] (COUPLED, DECOUPLED, FIXED_INTERVAL; default 10000; 0..1e6). process() puts
+    each event into its sensor's map when it arrives, but matches it (and gives it its lifetime) only once an
+    event more than L later has arrived, or at the end of the packet: a counterpart that fires up to L later
+    in the other sensor (a slower pixel, the other camera's latency, a low-contrast edge that needs longer to
+    cross a threshold) is then there to match. The output of an event is thus final L after it, plus the
+    processing time: that is the latency this adds. The look-ahead cannot reach past the packet, so give
+    process() packets much longer than L (the 33 ms windows of EventCapture are). Lifetimes stay causal: the
+    plane fit sees only the events before the event. 0 decides every event when it arrives, as the paper
+    does; processEvent() always does. */
+    CV_WRAP virtual double getLookAhead() const = 0;
+    CV_WRAP virtual void setLookAhead(double us) = 0;
     /** @brief FIXED_INTERVAL: how long every event stays active [us] (default 10000); in the other per-event
     modes, the lifetime an event without one is taken to have for its activity during the cold start. */
     CV_WRAP virtual double getFixedInterval() const = 0;

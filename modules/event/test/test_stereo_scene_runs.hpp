@@ -1,0 +1,75 @@
+// This file is part of OpenCV project.
+// It is subject to the license terms in the LICENSE file found in the top-level directory
+// of this distribution and at http://opencv.org/license.html.
+
+#ifndef OPENCV_EVENT_TEST_STEREO_SCENE_RUNS_HPP
+#define OPENCV_EVENT_TEST_STEREO_SCENE_RUNS_HPP
+
+// COUPLED runs over a simulated scene with the outputs and the ground truth per event, and the measures the
+// stereo tests take of them.
+
+#include <functional>
+
+namespace opencv_test {
+
+// One COUPLED run over a simulated scene, per event: the outputs and the ground truth.
+struct SceneRun
+{
+    std::vector<float> disparity, confidence, truth;
+    std::vector<int> flags, truthFlags, camera;
+};
+
+inline SceneRun runScene(const std::string& scene, double ms, const std::function<void(StereoEventMatcher&)>& configure)
+{
+    Ptr<StereoEventSimulator> sim = StereoEventSimulator::create(scene);
+    Ptr<StereoEventMatcher> m = StereoEventMatcher::create(sim->getSensorSize(), STEREO_COUPLED);
+    configure(*m);
+    SceneRun run;
+    std::vector<Event> ev;
+    Mat gt, d, fl, conf;
+    for (double t = 20000; t <= ms * 1000 + 1; t += 20000)
+    {
+        sim->generate(t, ev, gt);
+        m->process(ev, d, noArray(), fl, noArray(), noArray(), conf);
+        for (int i = 0; i < (int)ev.size(); i++)
+        {
+            run.disparity.push_back(d.at<float>(i));
+            run.confidence.push_back(conf.at<float>(i));
+            run.flags.push_back(fl.at<int>(i));
+            run.truth.push_back(gt.at<float>(i, GT_DISPARITY));
+            run.truthFlags.push_back((int)gt.at<float>(i, GT_FLAGS));
+            run.camera.push_back(ev[(size_t)i].camera);
+        }
+    }
+    return run;
+}
+
+// Left signal events within 1 px of the truth, over all left signal events [%].
+inline double matchingRate(const SceneRun& r)
+{
+    int64 all = 0, matched = 0;
+    for (size_t i = 0; i < r.disparity.size(); i++)
+        if (r.camera[i] == CAMERA_LEFT && !(r.truthFlags[i] & GT_FLAG_NOISE))
+        {
+            all++;
+            matched += r.disparity[i] > 0 && std::abs(r.disparity[i] - r.truth[i]) <= 1;
+        }
+    return 100.0 * (double)matched / (double)std::max<int64>(1, all);
+}
+
+// Estimates of non-occluded signal events within 1 px of the truth [%].
+inline double within1(const SceneRun& r)
+{
+    int64 estimated = 0, good = 0;
+    for (size_t i = 0; i < r.disparity.size(); i++)
+        if (!(r.truthFlags[i] & (GT_FLAG_NOISE | GT_FLAG_OCCLUDED)) && r.disparity[i] >= 0)
+        {
+            estimated++;
+            good += std::abs(r.disparity[i] - r.truth[i]) <= 1;
+        }
+    return 100.0 * (double)good / (double)std::max<int64>(1, estimated);
+}
+
+}  // namespace opencv_test
+
+#endif  // OPENCV_EVENT_TEST_STEREO_SCENE_RUNS_HPP
