@@ -304,6 +304,8 @@ TEST(StereoEventMatcher, bad_input_raises_errors_that_name_the_event)
     EXPECT_THROW(m->setMinConfidence(1.5), cv::Exception);
     EXPECT_THROW(m->setMinConfidence(std::numeric_limits<double>::quiet_NaN()), cv::Exception);
     EXPECT_THROW(m->setPriorTolerance(-1), cv::Exception);
+    EXPECT_THROW(m->setLookAhead(-1), cv::Exception);
+    EXPECT_THROW(m->setLookAhead(2e6), cv::Exception);
     EXPECT_THROW(m->setCalibration(StereoCalibration::fromRectified(Size(240, 180), 200, 0.1)), cv::Exception);
 }
 
@@ -319,6 +321,7 @@ TEST(StereoEventMatcher, parameters_round_trip_through_FileStorage)
     a->setUniquenessRatio(30);
     a->setMinConfidence(0.4);
     a->setPriorTolerance(55);
+    a->setLookAhead(2500);
     a->setFixedInterval(5000);
     a->setActiveDistance(1.5);
     a->getLifetimeEstimator(0)->setWindowSize(7);
@@ -339,6 +342,7 @@ TEST(StereoEventMatcher, parameters_round_trip_through_FileStorage)
     EXPECT_EQ(b->getUniquenessRatio(), 30);
     EXPECT_EQ(b->getMinConfidence(), 0.4);
     EXPECT_EQ(b->getPriorTolerance(), 55);
+    EXPECT_EQ(b->getLookAhead(), 2500);
     EXPECT_EQ(b->getFixedInterval(), 5000);
     EXPECT_EQ(b->getActiveDistance(), 1.5);
     EXPECT_EQ(b->getLifetimeEstimator(1)->getWindowSize(), 7);

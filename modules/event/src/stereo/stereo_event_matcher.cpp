@@ -130,7 +130,7 @@ void StereoEventMatcherImpl::processAdmitted(const Event& e, Point r, int64 cold
     if (mode_ == STEREO_DECOUPLED)
         est.lifetime = processEventInRows(estimator, re, est.flow, status, s.lifetimes[c]);
     // The event takes part in its own descriptor while it is matched; its final activity follows below.
-    maps_[c].activate(r.x, r.y, p, std::numeric_limits<int64>::max(), 0.f, Vec2f());
+    activateUndecided(c, r, p);
     const MatchResult m = match(c, r, p, e.t, s);
     est.flags |= m.flags;
     est.confidence = m.confidence;
@@ -196,6 +196,11 @@ void StereoEventMatcherImpl::processAdmitted(const Event& e, Point r, int64 cold
         est.flow = Vec2f();
     }
     remember(c, r, e.t, activeFor, est.disparity);
+}
+
+void StereoEventMatcherImpl::activateUndecided(int c, Point r, int p)
+{
+    maps_[c].activate(r.x, r.y, p, std::numeric_limits<int64>::max(), 0.f, Vec2f());
 }
 
 // How long an event with this lifetime (us per pixel) stays active: until its edge has moved
@@ -326,10 +331,11 @@ void StereoEventMatcherImpl::processOperations(const Mat_<Event>& ev, const Stor
         const int i = operations_[(size_t)k] >> 1;
         const Event& e = ev(i);
         const Admission& a = admitted_[(size_t)i];
-        const size_t pixel = ((size_t)a.rectified.y * size_.width + a.rectified.x) * 2 + (e.p ? 1 : 0);
+        const int p = e.p ? 1 : 0;
+        const size_t pixel = ((size_t)a.rectified.y * size_.width + a.rectified.x) * 2 + p;
         if (!(operations_[(size_t)k] & 1))
         {
-            maps_[e.camera].activate(a.rectified.x, a.rectified.y, e.p ? 1 : 0, std::numeric_limits<int64>::max(), 0.f, Vec2f());
+            activateUndecided(e.camera, a.rectified, p);
             pendingEvents_[e.camera][pixel]++;
             return;
         }
@@ -434,24 +440,27 @@ void StereoEventMatcherImpl::scheduleOperations(int valid)
                 add(i, true, times_[(size_t)i]);
         return;
     }
+    // The events arrive and are decided in index order (times do not decrease): the undecided ones are the
+    // events from `next` to the last arrival, those outside the image aside.
     int64 decided = std::numeric_limits<int64>::min();
-    size_t next = 0;  // the first arrived event not yet decided, in operations_ (arrivals are in event order)
-    std::vector<int>& arrived = arrivedEvents_;
-    arrived.clear();
+    int next = 0;
+    // Decides the events before `end` that are due when an event arrives at `arrival`; all of them at the end.
+    auto decideUntil = [&](int end, int64 arrival, bool all) {
+        for (; next < end && (all || admittedRows_[(size_t)next] < 0 || timeAfter(times_[(size_t)next], lookAhead_) < arrival);
+             next++)
+            if (admittedRows_[(size_t)next] >= 0)
+            {
+                decided = times_[(size_t)next];
+                add(next, true, decided);
+            }
+    };
     for (int j = 0; j < valid; j++)
-    {
-        if (admittedRows_[(size_t)j] < 0)
-            continue;
-        for (; next < arrived.size() && timeAfter(times_[(size_t)arrived[next]], lookAhead_) < times_[(size_t)j]; next++)
+        if (admittedRows_[(size_t)j] >= 0)
         {
-            decided = times_[(size_t)arrived[next]];
-            add(arrived[next], true, decided);
+            decideUntil(j, times_[(size_t)j], false);
+            add(j, false, decided);
         }
-        add(j, false, decided);
-        arrived.push_back(j);
-    }
-    for (; next < arrived.size(); next++)
-        add(arrived[next], true, times_[(size_t)arrived[next]]);
+    decideUntil(valid, 0, true);
 }
 
 // ---- parameters

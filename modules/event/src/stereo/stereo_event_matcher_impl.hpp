@@ -167,6 +167,9 @@ private:
     Point admit(const Event& e);
 
     void remember(int c, Point r, int64 t, int64 activeFor, float disparity);
+    // Makes the event at rectified pixel r active in sensor c's map until its decision sets its activity: it
+    // takes part in the descriptors of the events matched meanwhile, its own included.
+    void activateUndecided(int c, Point r, int p);
 
     // How long an event with this lifetime (us per pixel) stays active: until its edge has moved
     // activeDistance_ pixels, at most maxLifetime_.
@@ -264,7 +267,7 @@ private:
     std::vector<Admission> admitted_;
     std::vector<int> admittedRows_;
     std::vector<int64> times_;
-    std::vector<int> operations_, operationRows_, arrivedEvents_;
+    std::vector<int> operations_, operationRows_;
     std::vector<int64> operationTimes_;
     // Per sensor, pixel and polarity: arrived events not decided yet (look-ahead).
     std::vector<int> pendingEvents_[2];
