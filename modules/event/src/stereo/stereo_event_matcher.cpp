@@ -490,6 +490,9 @@ void StereoEventMatcherImpl::sizeScratch(MatchScratch& s) const
     s.candidates.resize(range);
     s.offsets.resize(range);
     s.cost.resize(range);
+    s.seenScore.resize(range);
+    s.columnMass.resize((size_t)aggregationWindow_);
+    s.unseenMass.resize((size_t)aggregationWindow_ + 1);
 }
 
 void StereoEventMatcherImpl::setCalibration(const StereoCalibration& calibration)

@@ -40,13 +40,18 @@ struct Neighbour
 /** The working memory of matching one event (one per thread): the candidates as disparity index (disparity -
 min) in increasing order, the byte offset of each one's descriptor in the other sensor from the event's
 column, and their costs (the first `count` of each, sized for the whole disparity range); the matched
-window's lifetimes; the left-right check's disparities; the lifetime estimators' scratch, per camera. */
+window's lifetimes; the left-right check's disparities; the lifetime estimators' scratch, per camera.
+Near the other image's border (scoreSeenColumns): the candidates' scores, the event's own mass per column of
+the window and the mass of its first k unseen columns. */
 struct MatchScratch
 {
     int count = 0;
     std::vector<int> candidates;
     std::vector<ptrdiff_t> offsets;
     std::vector<unsigned> cost;
+    std::vector<unsigned> seenScore;
+    std::vector<unsigned> columnMass;
+    std::vector<unsigned> unseenMass;
     std::vector<Neighbour> neighbours;
     std::vector<float> disparities;
     LifetimeScratch lifetimes[2];
@@ -206,7 +211,14 @@ private:
     // left. Cost windows cover only the event's own image: past its border both sensors' descriptors are zero for
     // a candidate that also runs past the other border (d near 0 at the right border of the left image), which
     // would match "nothing" against "nothing" for free and pull border events toward that candidate.
-    bool clipToImage(Point r, int& x0, int& x1, int& y0, int& y1) const;
+    bool clipToImage(Point r, int& x0, int& x1, int& y0, int& y1) const
+    {
+        x0 = std::max(x0, -r.x);
+        x1 = std::min(x1, size_.width - 1 - r.x);
+        y0 = std::max(y0, -r.y);
+        y1 = std::min(y1, size_.height - 1 - r.y);
+        return x0 <= x1 && y0 <= y1;
+    }
 
     // Sum of the descriptor values over [x0, x1] x [y0, y1] relative to q: the cost of matching against nothing.
     unsigned rectMass(const ZouDescriptorMap& map, Point q, int x0, int x1, int y0, int y1) const;
@@ -214,10 +226,22 @@ private:
     // Matches the event at r (camera c, polarity p, time t) along its row: the best candidate and its confidence.
     MatchResult match(int c, Point r, int p, int64 t, MatchScratch& s) const;
 
+    // How many columns of the cost window [x0, x1] (relative to the event's pixel r, clipped) disparity d maps
+    // past the other image's border: the first ones for the left camera (sign -1), the last for the right.
+    int unseenColumns(int sign, Point r, int x0, int x1, int d) const;
+
+    // The candidates' scores at the window of half-width h: their costs, except for the candidates whose
+    // window the other sensor sees only in part, scored on the seen columns and scaled to the whole window
+    // (s.seenScore; s.cost itself when there are none). columnsAt is the half-width that s.columnMass holds
+    // (-1: none yet); it grows with h, one step at a time.
+    const unsigned* scoreSeenColumns(const ZouDescriptorMap& self, int sign, Point r, int h, int& columnsAt,
+                                     MatchScratch& s) const;
+
     // The temporal prior's decision for an event without a unique winner at the largest window (best cost
-    // bestCost, the candidates' costs in s): false when it has none; otherwise the chosen candidate in m.
+    // bestCost, the candidates' scores in score): false when it has none; otherwise the chosen candidate in m.
     enum { PRIOR_RADIUS = 5, PRIOR_SUPPORT = 3 };
-    bool decideByPrior(int c, Point r, int64 t, unsigned bestCost, MatchScratch& s, MatchResult& m) const;
+    bool decideByPrior(int c, Point r, int64 t, const unsigned* score, unsigned bestCost, MatchScratch& s,
+                       MatchResult& m) const;
 
     // Left-right check against the other sensor's own estimates: the active events around the counterpart
     // were matched the other way (toward this sensor); when they have disparities, their median must agree

@@ -25,25 +25,118 @@ unsigned StereoEventMatcherImpl::addRect(const ZouDescriptorMap& self, const Zou
                          s.count, x1 - x0 + 1, y1 - y0 + 1, s.cost.data());
 }
 
-// Clips the rectangle [x0, x1] x [y0, y1] relative to the event's pixel r to the image; false when nothing is
-// left. Cost windows cover only the event's own image: past its border both sensors' descriptors are zero for
-// a candidate that also runs past the other border (d near 0 at the right border of the left image), which
-// would match "nothing" against "nothing" for free and pull border events toward that candidate.
-bool StereoEventMatcherImpl::clipToImage(Point r, int& x0, int& x1, int& y0, int& y1) const
-{
-    x0 = std::max(x0, -r.x);
-    x1 = std::min(x1, size_.width - 1 - r.x);
-    y0 = std::max(y0, -r.y);
-    y1 = std::min(y1, size_.height - 1 - r.y);
-    return x0 <= x1 && y0 <= y1;
-}
-
 // Sum of the descriptor values over [x0, x1] x [y0, y1] relative to q: the cost of matching against nothing.
 unsigned StereoEventMatcherImpl::rectMass(const ZouDescriptorMap& map, Point q, int x0, int x1, int y0, int y1) const
 {
     // The batch kernel without candidates: it returns the rectangle's mass alone.
     return rectSadBatch_(map.descriptor(q.x + x0, q.y + y0), nullptr, map.descriptorRowStep(), 0, nullptr, 0,
                          x1 - x0 + 1, y1 - y0 + 1, nullptr);
+}
+
+namespace {
+
+// The sum of one descriptor's counts: its SAD against nothing. Eight counts at a time: pairs of bytes into 16-bit
+// lanes, then the four lanes by one multiplication (a descriptor's 24 counts sum to far below 65536).
+inline unsigned descriptorMass(const uchar* d)
+{
+    static_assert(ZouDescriptorMap::DESCRIPTOR_BYTES == 24, "three 8-byte words per descriptor");
+    const uint64 bytes = 0x00FF00FF00FF00FFull, lanes = 0x0001000100010001ull;
+    uint64 sum = 0;
+    for (int w = 0; w < 3; w++)
+    {
+        uint64 v;
+        std::memcpy(&v, d + 8 * w, sizeof(v));
+        sum += (v & bytes) + ((v >> 8) & bytes);
+    }
+    return (unsigned)((sum * lanes) >> 48);
+}
+
+// A cost over `seen` of a window's `width` columns, scaled to the whole window (rounded).
+inline uint64 scaleToWindow(uint64 cost, int width, int seen)
+{
+    return seen == width ? cost : (cost * (uint64)width + (uint64)seen / 2) / (uint64)seen;
+}
+
+}  // namespace
+
+int StereoEventMatcherImpl::unseenColumns(int sign, Point r, int x0, int x1, int d) const
+{
+    // Column j of the window is column r.x + j + sign * d of the other image.
+    const int unseen = sign < 0 ? d - r.x - x0 : x1 - (size_.width - 1 - r.x - d);
+    return std::max(0, std::min(x1 - x0 + 1, unseen));
+}
+
+// Near the other image's border, a candidate's window runs partly past it, where the other sensor's descriptors
+// are zero: there its cost is the event's own mass whatever the scene, which would favour the candidates whose
+// window stays inside (the smaller disparities) and weigh every candidate against "nothing" unfairly. Such a
+// candidate is scored on the columns the other sensor sees, scaled to the whole window, so that all candidates
+// and "nothing" are compared per column. The candidates run by disparity and the unseen columns grow with it:
+// those with unseen columns are the last ones.
+const unsigned* StereoEventMatcherImpl::scoreSeenColumns(const ZouDescriptorMap& self, int sign, Point r, int h,
+                                                         int& columnsAt, MatchScratch& s) const
+{
+    const int n = s.count;
+    const int* const candidates = s.candidates.data();
+    int x0 = -h, x1 = h, y0 = -h, y1 = h;
+    clipToImage(r, x0, x1, y0, y1);
+    const int width = x1 - x0 + 1;
+    const int mostUnseen = unseenColumns(sign, r, x0, x1, minDisparity_ + candidates[n - 1]);
+    if (mostUnseen == 0 && columnsAt < 0)
+    {
+        s.unseenMass[0] = 0;
+        return s.cost.data();
+    }
+    // The event's own mass per unseen column (index j + the largest half-width). The unseen columns are those
+    // that the largest disparity maps past the border: their inner end is the same at every window size, and
+    // each step adds columns at the outer end. Grown from the previous window by its new columns and the new
+    // row at each end of the old ones; once needed, kept up at every step (the unseen columns only grow).
+    const int base = aggregationWindow_ / 2;
+    unsigned* const columnMass = s.columnMass.data();
+    const auto massOfColumn = [&](int j, int ya, int yb) {
+        unsigned sum = 0;
+        for (int y = ya; y <= yb; y++)
+            sum += descriptorMass(self.descriptor(r.x + j, r.y + y));
+        return sum;
+    };
+    int px0 = 0, px1 = -1, py0 = 0, py1 = -1;  // the previous window, empty when there is none
+    if (columnsAt >= 0)
+    {
+        CV_DbgAssert(columnsAt == h - 1);
+        px0 = -columnsAt, px1 = columnsAt, py0 = -columnsAt, py1 = columnsAt;
+        clipToImage(r, px0, px1, py0, py1);
+    }
+    const int firstUnseen = sign < 0 ? x0 : x1 - mostUnseen + 1;
+    for (int j = firstUnseen; j < firstUnseen + mostUnseen; j++)
+    {
+        unsigned& m = columnMass[j + base];
+        if (j < px0 || j > px1)
+            m = massOfColumn(j, y0, y1);
+        else
+            m += (y0 < py0 ? massOfColumn(j, y0, y0) : 0u) + (y1 > py1 ? massOfColumn(j, y1, y1) : 0u);
+    }
+    columnsAt = h;
+    // The mass of the first k unseen columns, from the window's left end (left camera) or its right end.
+    unsigned* const unseenMass = s.unseenMass.data();
+    unseenMass[0] = 0;
+    for (int k = 1; k <= mostUnseen; k++)
+        unseenMass[k] = unseenMass[k - 1] + columnMass[(sign < 0 ? x0 + k - 1 : x1 - k + 1) + base];
+    const unsigned* const cost = s.cost.data();
+    unsigned* const score = s.seenScore.data();
+    for (int i = n - 1; i >= 0; i--)
+    {
+        const int unseen = unseenColumns(sign, r, x0, x1, minDisparity_ + candidates[i]);
+        if (unseen == 0)
+        {
+            std::copy(cost, cost + i + 1, score);
+            break;
+        }
+        // A candidate's centre column lies in the other image, so it sees at least one column. Its cost over
+        // the unseen columns is their mass exactly (SAD against zeros).
+        CV_DbgAssert(unseen < width && cost[i] >= unseenMass[unseen]);
+        score[i] = (unsigned)std::min<uint64>(std::numeric_limits<unsigned>::max(),
+                                              scaleToWindow(cost[i] - unseenMass[unseen], width, width - unseen));
+    }
+    return score;
 }
 
 // Matches the event at r (camera c, polarity p, time t) along its row.
@@ -80,11 +173,13 @@ MatchResult StereoEventMatcherImpl::match(int c, Point r, int p, int64 t, MatchS
     std::fill_n(cost, n, 0u);
     int h = costWindow_ / 2;
     unsigned mass = addRect(self, other, r, -h, h, -h, h, s);
+    int columnsAt = -1;
     for (;;)
     {
+        const unsigned* const score = scoreSeenColumns(self, sign, r, h, columnsAt, s);
         int best = 0;  // index into candidates, which run by disparity: ties go to the smaller disparity
         for (int i = 1; i < n; i++)
-            if (cost[i] < cost[best])
+            if (score[i] < score[best])
                 best = i;
         const int kBest = candidates[best];
         // The candidates within one pixel of the best are next to it (they run by disparity, one each):
@@ -93,11 +188,15 @@ MatchResult StereoEventMatcherImpl::match(int c, Point r, int p, int64 t, MatchS
         const int hi = best < n - 1 && candidates[best + 1] == kBest + 1 ? best + 1 : best;
         uint64 second = std::numeric_limits<uint64>::max();
         for (int i = 0; i < lo; i++)
-            second = std::min(second, (uint64)cost[i]);
+            second = std::min(second, (uint64)score[i]);
         for (int i = hi + 1; i < n; i++)
-            second = std::min(second, (uint64)cost[i]);
-        const unsigned bestCost = cost[best];
+            second = std::min(second, (uint64)score[i]);
+        const unsigned bestCost = score[best];
         const int xo = r.x + sign * (minDisparity_ + kBest);  // the counterpart's column
+        int x0 = -h, x1 = h, y0 = -h, y1 = h;
+        clipToImage(r, x0, x1, y0, y1);  // the costs' columns, never empty (r is inside)
+        const int width = x1 - x0 + 1;
+        const int seen = width - (score == cost ? 0 : unseenColumns(sign, r, x0, x1, minDisparity_ + kBest));
         // The alternatives the winner must beat: every candidate further than one pixel away, and "no
         // counterpart (yet)", with the cost of matching against nothing (the window's mass). A winner that
         // only just beats nothing is most often a neighbour of a counterpart that has not arrived yet, off by
@@ -106,17 +205,15 @@ MatchResult StereoEventMatcherImpl::match(int c, Point r, int p, int64 t, MatchS
         const uint64 margin = (uint64)(100 - uniquenessRatio_);
         const auto clearlyBelow = [margin](uint64 cost, uint64 alternative) { return cost * 100 < alternative * margin; };
         const bool last = h >= aggregationWindow_ / 2;
-        uint64 nothing = mass;
+        // Both masses over the columns the other sensor sees at the winner, scaled like its score (the other
+        // sensor's descriptors past its border are zero).
+        uint64 nothing = scaleToWindow(mass - s.unseenMass[(size_t)(width - seen)], width, seen);
         if (!clearlyBelow(bestCost, nothing) && (last || clearlyBelow(bestCost, second)))
-        {
-            int x0 = -h, x1 = h, y0 = -h, y1 = h;
-            clipToImage(r, x0, x1, y0, y1);  // the same columns as the costs, never empty (r is inside)
-            nothing = std::max(nothing, (uint64)rectMass(other, Point(xo, r.y), x0, x1, y0, y1));
-        }
+            nothing = std::max(nothing, scaleToWindow(rectMass(other, Point(xo, r.y), x0, x1, y0, y1), width, seen));
         const uint64 alternative = std::min(second, nothing);
         const bool unique = clearlyBelow(bestCost, alternative);
         // Not unique at the largest window: the temporal prior may decide between the near-equals.
-        if (!unique && last && priorTolerance_ > 0 && decideByPrior(c, r, t, bestCost, s, m))
+        if (!unique && last && priorTolerance_ > 0 && decideByPrior(c, r, t, score, bestCost, s, m))
             return m;
         // The aggregation stops when the winner beats every alternative by the uniqueness margin, or at the
         // largest window.
@@ -129,7 +226,7 @@ MatchResult StereoEventMatcherImpl::match(int c, Point r, int p, int64 t, MatchS
             // Candidates run by disparity: the neighbours, when they are candidates, are next to the best.
             if (lo == best - 1 && hi == best + 1)
             {
-                const double cm = cost[best - 1], c0 = bestCost, cp = cost[best + 1];
+                const double cm = score[best - 1], c0 = bestCost, cp = score[best + 1];
                 const double denom = cm + cp - 2 * c0;
                 if (denom > 0)
                     d += std::max(-0.5, std::min(0.5, 0.5 * (cm - cp) / denom));
@@ -154,19 +251,19 @@ MatchResult StereoEventMatcherImpl::match(int c, Point r, int p, int64 t, MatchS
 // its cost is within priorTolerance_ % of the best's, with the share of those estimates that agree with the
 // median within a pixel as its confidence. Edges move across the sensor a pixel at a time: what their events
 // were matched to a moment ago, nearby, is most often what the next one should be matched to.
-bool StereoEventMatcherImpl::decideByPrior(int c, Point r, int64 t, unsigned bestCost, MatchScratch& s, MatchResult& m) const
+bool StereoEventMatcherImpl::decideByPrior(int c, Point r, int64 t, const unsigned* score, unsigned bestCost, MatchScratch& s,
+                                           MatchResult& m) const
 {
     float prior;
     const size_t support = activeEstimateMedian(c, r, PRIOR_RADIUS, t, s, prior);
     if (support < PRIOR_SUPPORT)
         return false;
     const int* const candidates = s.candidates.data();
-    const unsigned* const cost = s.cost.data();
     int chosen = -1;
     for (int i = 0; i < s.count; i++)
-        if (std::abs((float)(minDisparity_ + candidates[i]) - prior) <= 1.f && (chosen < 0 || cost[i] < cost[chosen]))
+        if (std::abs((float)(minDisparity_ + candidates[i]) - prior) <= 1.f && (chosen < 0 || score[i] < score[chosen]))
             chosen = i;
-    if (chosen < 0 || (uint64)cost[chosen] * 100 > (uint64)bestCost * (uint64)(100 + priorTolerance_))
+    if (chosen < 0 || (uint64)score[chosen] * 100 > (uint64)bestCost * (uint64)(100 + priorTolerance_))
         return false;
     int agree = 0;  // s.disparities still holds the neighbourhood: consistent() below reuses it
     for (float v : s.disparities)

@@ -72,7 +72,10 @@ activate and expire.
 **Cost and decision.** For each disparity d in [min, max] whose candidate pixel has active structure of the
 event's polarity, the cost is the sum over a W x W window of the SADs between the event's descriptors and
 the candidate's; near the border the window is clipped to the event's own image (past it both sensors are
-empty, which would favour candidates that also run past the other border).
+empty, which would favour candidates that also run past the other border). Where the window of a candidate
+reaches past the other image's border, the other sensor cannot see those columns: the candidate's cost is
+taken over the columns it sees, scaled to the whole window, and so is the cost of "no counterpart yet", so
+that what one camera alone sees counts neither for nor against a candidate.
 
 **Decision.** The alternatives to the cheapest candidate (the winner) are every candidate further than one
 pixel from it and "no counterpart yet", whose cost is that of matching against nothing (the window's

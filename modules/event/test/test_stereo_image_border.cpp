@@ -1,0 +1,73 @@
+// This file is part of OpenCV project.
+// It is subject to the license terms in the LICENSE file found in the top-level directory
+// of this distribution and at http://opencv.org/license.html.
+
+#include "test_precomp.hpp"
+
+namespace opencv_test { namespace {
+
+// A vertical ON edge, rows 10-30, at column 19 of the left sensor and column 3 of the right one (disparity 16),
+// all at one instant inside the cold start (every event stays visible to matching). With `oneSided`, the left
+// sensor also sees an OFF patch at columns 0-8, which lies past the right sensor's border at every candidate
+// disparity (13-19: the columns where the right edge's vectors reach). The cost window (31) reaches the patch.
+// `mirrored` swaps the sensors and mirrors the columns (the edge at 60 in the left sensor, 44 in the right one,
+// the patch in the right one at columns 55-63). Returns the estimates of the first sensor's edge events.
+std::vector<StereoEventEstimate> edgeNextToTheBorder(bool oneSided, bool mirrored)
+{
+    const int64 t = 1000;
+    const int width = 64;
+    const int first = mirrored ? CAMERA_RIGHT : CAMERA_LEFT;
+    const auto at = [&](int x, int y, int p, int camera) {
+        return mirrored ? Event(t, (short)(width - 1 - x), (short)y, p, 1 - camera) : Event(t, (short)x, (short)y, p, camera);
+    };
+    std::vector<Event> ev;
+    for (int y = 10; y <= 30; y++)
+        ev.push_back(at(19, y, POLARITY_ON, CAMERA_LEFT));
+    if (oneSided)
+        for (int y = 10; y <= 30; y++)
+            for (int x = 0; x <= 8; x++)
+                ev.push_back(at(x, y, POLARITY_OFF, CAMERA_LEFT));
+    for (int y = 10; y <= 30; y++)
+        ev.push_back(at(3, y, POLARITY_ON, CAMERA_RIGHT));
+    CV_Assert(ev[0].camera == first);
+    Ptr<StereoEventMatcher> m = StereoEventMatcher::create(Size(width, 48), STEREO_COUPLED);
+    m->setAggregationWindow(31);
+    m->setCostWindow(31);
+    Mat d, flags, confidence;
+    m->process(ev, d, noArray(), flags, noArray(), noArray(), confidence);
+    std::vector<StereoEventEstimate> edge;
+    for (int i = 0; i < 21; i++)
+    {
+        StereoEventEstimate e;
+        e.disparity = d.at<float>(i);
+        e.flags = flags.at<int>(i);
+        e.confidence = confidence.at<float>(i);
+        edge.push_back(e);
+    }
+    return edge;
+}
+
+// On every column both sensors see, the edge's window at disparity 16 equals the other sensor's: the cost there
+// is 0, so the match is certain (confidence 1). What one sensor alone sees past the other one's border is no
+// evidence for or against any candidate: without it the estimates are the same, bit for bit. Both cameras.
+TEST(StereoEventMatcher_ImageBorder, what_only_one_sensor_sees_past_the_other_border_does_not_count)
+{
+    for (bool mirrored : { false, true })
+    {
+        const std::vector<StereoEventEstimate> withPatch = edgeNextToTheBorder(true, mirrored);
+        const std::vector<StereoEventEstimate> without = edgeNextToTheBorder(false, mirrored);
+        for (size_t i = 0; i < withPatch.size(); i++)
+        {
+            const StereoEventEstimate& e = withPatch[i];
+            SCOPED_TRACE(cv::format("%s sensor, row %d", mirrored ? "right" : "left", 10 + (int)i));
+            EXPECT_TRUE(e.flags & STEREO_HAS_DISPARITY);
+            EXPECT_NEAR(e.disparity, 16.0, 0.5);
+            EXPECT_EQ(e.confidence, 1.f);
+            EXPECT_EQ(e.disparity, without[i].disparity);
+            EXPECT_EQ(e.confidence, without[i].confidence);
+            EXPECT_EQ(e.flags, without[i].flags);
+        }
+    }
+}
+
+}}  // namespace
