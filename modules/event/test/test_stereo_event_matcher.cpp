@@ -268,6 +268,40 @@ TEST(StereoEventMatcher, process_and_processEvent_agree_and_runs_repeat)
     }
 }
 
+// The lifetime estimation's own time (the paper's Table I): counted only when asked for, only in the modes that
+// estimate lifetimes, summed over the row bands, without changing any output; reset() starts it again.
+TEST(StereoEventMatcher, lifetime_time_is_counted_only_when_on_and_changes_no_output)
+{
+    Ptr<StereoEventSimulator> sim = StereoEventSimulator::create("cluttered");
+    std::vector<Event> ev;
+    Mat gt;
+    sim->generate(60000, ev, gt);
+    for (int mode : { (int)STEREO_COUPLED, (int)STEREO_DECOUPLED, (int)STEREO_FIXED_INTERVAL })
+        for (int threads : { 1, 2 })
+        {
+            const std::string what = getStereoModeName(mode) + ", " + std::to_string(threads) + " thread(s)";
+            Ptr<StereoEventMatcher> plain = StereoEventMatcher::create(sim->getSensorSize(), mode);
+            Ptr<StereoEventMatcher> timed = StereoEventMatcher::create(sim->getSensorSize(), mode);
+            plain->setNumThreads(threads);
+            timed->setNumThreads(threads);
+            EXPECT_FALSE(plain->getTimeLifetimes());
+            timed->setTimeLifetimes(true);
+            Mat d, lt, fl, d2, lt2, fl2;
+            plain->process(ev, d, lt, fl);
+            timed->process(ev, d2, lt2, fl2);
+            EXPECT_EQ(plain->getLifetimeSeconds(), 0.0) << what;
+            if (mode == STEREO_FIXED_INTERVAL)
+                EXPECT_EQ(timed->getLifetimeSeconds(), 0.0) << what;
+            else
+                EXPECT_GT(timed->getLifetimeSeconds(), 0.0) << what;
+            EXPECT_EQ(cvtest::norm(d, d2, NORM_INF), 0) << what;
+            EXPECT_EQ(cvtest::norm(lt, lt2, NORM_INF), 0) << what;
+            EXPECT_EQ(cvtest::norm(fl, fl2, NORM_INF), 0) << what;
+            timed->reset();
+            EXPECT_EQ(timed->getLifetimeSeconds(), 0.0) << what;
+        }
+}
+
 TEST(StereoEventMatcher, bad_input_raises_errors_that_name_the_event)
 {
     Ptr<StereoEventMatcher> m = StereoEventMatcher::create(Size(64, 48));

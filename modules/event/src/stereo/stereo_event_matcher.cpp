@@ -115,6 +115,25 @@ void StereoEventMatcherImpl::processEvent(const Event& e, StereoEventEstimate& e
     addStatusCounts(*estimators_[e.camera], scratch_.lifetimes[e.camera]);
 }
 
+namespace {
+
+// Adds the time from its construction to its destruction to `ticks` when `on` (setTimeLifetimes).
+class LifetimeTimer
+{
+public:
+    LifetimeTimer(bool on, int64& ticks) : ticks_(on ? &ticks : nullptr), start_(on ? getTickCount() : 0) {}
+    ~LifetimeTimer()
+    {
+        if (ticks_)
+            *ticks_ += getTickCount() - start_;
+    }
+private:
+    int64* ticks_;
+    int64 start_;
+};
+
+}  // namespace
+
 // processEvent after admit() and the expiries due: the event at rectified pixel r, inside the image.
 // Reads and writes only rows within eventRowReach() of r.y, with its own scratch: see processOperations().
 void StereoEventMatcherImpl::processAdmitted(const Event& e, Point r, int64 coldStartEnd, bool laterPending, MatchScratch& s,
@@ -128,7 +147,10 @@ void StereoEventMatcherImpl::processAdmitted(const Event& e, Point r, int64 cold
 
     int status = -1;
     if (mode_ == STEREO_DECOUPLED)
+    {
+        const LifetimeTimer timer(timeLifetimes_, s.lifetimeTicks);
         est.lifetime = processEventInRows(estimator, re, est.flow, status, s.lifetimes[c]);
+    }
     // The event takes part in its own descriptor while it is matched; its final activity follows below.
     activateUndecided(c, r, p);
     const MatchResult m = match(c, r, p, e.t, s);
@@ -143,6 +165,7 @@ void StereoEventMatcherImpl::processAdmitted(const Event& e, Point r, int64 cold
     }
     if (mode_ == STEREO_COUPLED)
     {
+        const LifetimeTimer timer(timeLifetimes_, s.lifetimeTicks);
         if (est.disparity >= 0 && matchedLifetime(1 - c, m.counterpartX, r.y, p, s, est.lifetime, est.flow))
         {
             insertEventInRows(estimator, re, est.lifetime, est.flow, s.lifetimes[c]);
@@ -479,8 +502,20 @@ void StereoEventMatcherImpl::reset()
     frames_.configure(size_, minDisparity_, maxDisparity_, frameWindow_);
     lastTime_ = std::numeric_limits<int64>::min();
     sizeScratch(scratch_);
+    scratch_.lifetimeTicks = 0;
     for (MatchScratch& s : bandScratch_)
+    {
         sizeScratch(s);
+        s.lifetimeTicks = 0;
+    }
+}
+
+double StereoEventMatcherImpl::getLifetimeSeconds() const
+{
+    int64 ticks = scratch_.lifetimeTicks;
+    for (const MatchScratch& s : bandScratch_)
+        ticks += s.lifetimeTicks;
+    return (double)ticks / getTickFrequency();
 }
 
 void StereoEventMatcherImpl::sizeScratch(MatchScratch& s) const

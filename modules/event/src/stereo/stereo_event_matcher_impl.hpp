@@ -49,6 +49,7 @@ struct MatchScratch
     std::vector<int> candidates;
     std::vector<ptrdiff_t> offsets;
     std::vector<unsigned> cost;
+    int64 lifetimeTicks = 0;  // time in the lifetime estimation (setTimeLifetimes), cv::getTickCount() units
     std::vector<unsigned> seenScore;
     std::vector<unsigned> columnMass;
     std::vector<unsigned> unseenMass;
@@ -133,6 +134,9 @@ public:
     int getNumThreads() const CV_OVERRIDE { return numThreads_; }
 
     void setNumThreads(int threads) CV_OVERRIDE;
+    void setTimeLifetimes(bool on) CV_OVERRIDE { timeLifetimes_ = on; }
+    bool getTimeLifetimes() const CV_OVERRIDE { return timeLifetimes_; }
+    double getLifetimeSeconds() const CV_OVERRIDE;
     void write(FileStorage& fs) const CV_OVERRIDE;
 
     void read(const FileNode& fn) CV_OVERRIDE;
@@ -280,6 +284,7 @@ private:
     DescriptorRectSadBatchFn rectSadBatch_ = descriptorRectSadBatchFunction();
     MatchScratch scratch_;  // processEvent's
     int numThreads_ = 1;
+    bool timeLifetimes_ = false;
     // processOperations: the scheduler, each band's scratch, each event's admission, the operations.
     struct Admission
     {

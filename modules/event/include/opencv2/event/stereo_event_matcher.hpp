@@ -242,6 +242,17 @@ public:
     Not stored by write(). */
     CV_WRAP virtual int getNumThreads() const = 0;
     CV_WRAP virtual void setNumThreads(int threads) = 0;
+
+    /** @brief Times the lifetime estimation inside process() and processEvent() on its own: the plane fits
+    and their predictions, and in STEREO_COUPLED the matched windows' medians and the surface updates of
+    matched events, without the matching. The paper's Table I times this alone ("the time needed to calculate
+    the disparity is not included"); event_stereo_table prints it next to the whole matcher's time. Off by
+    default: on, it reads the clock twice per event. Not stored by write(). */
+    CV_WRAP virtual void setTimeLifetimes(bool on) = 0;
+    CV_WRAP virtual bool getTimeLifetimes() const = 0;
+    /** @brief Seconds spent in the lifetime estimation while setTimeLifetimes() was on, since the matcher was
+    created or reset(); summed over the row bands' threads. */
+    CV_WRAP virtual double getLifetimeSeconds() const = 0;
 };
 
 /** @brief "coupled", "decoupled", "fixed" or "sgbm" for a StereoMatchMode. */
