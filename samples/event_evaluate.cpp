@@ -85,6 +85,9 @@ struct EvaluationTotals
     int64 events = 0, signal = 0, noise = 0, candidates = 0, estimated = 0, within1 = 0, withLifetime = 0;
     // The matching rate: left signal events (occluded ones included) whose disparity is within 1 px of the truth.
     int64 leftSignal = 0, leftMatched = 0;
+    // The same over the left signal events the right camera sees (not flagged occluded): what a matcher can
+    // reach; leftSignal - leftVisible are the events no matcher can match.
+    int64 leftVisible = 0, leftVisibleMatched = 0;
     // Where the other left signal events go: a disparity more than 1 px off, rejected (STEREO_AMBIGUOUS),
     // no candidate (STEREO_NO_COUNTERPART); the rest had neither (outside the rectified image, or 0).
     int64 leftWrong = 0, leftAmbiguous = 0, leftNoCounterpart = 0;
@@ -422,10 +425,13 @@ int main(int argc, char** argv)
                 if (window[i].camera == CAMERA_LEFT)
                 {
                     acc.leftSignal++;
+                    const bool visible = !(flags & GT_FLAG_OCCLUDED);
+                    acc.leftVisible += visible;
                     if (estimate.hasDisparity && estimate.disparity[i] > 0)
                     {
                         const bool within = std::abs(estimate.disparity[i] - g[GT_DISPARITY]) <= 1.0;
                         acc.leftMatched += within;
+                        acc.leftVisibleMatched += within && visible;
                         acc.leftWrong += !within;
                     }
                     else if (!estimate.flags.empty())
@@ -494,6 +500,8 @@ int main(int argc, char** argv)
             << "disparity_density_percent," << density << "\n"
             << "within_1px_percent," << within1 << "\n"
             << "matching_rate_percent," << matchingRate << "\n"
+            << "left_occluded_percent," << share(acc.leftSignal - acc.leftVisible, acc.leftSignal) << "\n"
+            << "matching_rate_visible_percent," << share(acc.leftVisibleMatched, acc.leftVisible) << "\n"
             << "left_wrong_percent," << share(acc.leftWrong, acc.leftSignal) << "\n"
             << "left_ambiguous_percent," << share(acc.leftAmbiguous, acc.leftSignal) << "\n"
             << "left_no_counterpart_percent," << share(acc.leftNoCounterpart, acc.leftSignal) << "\n"
@@ -520,6 +528,9 @@ int main(int argc, char** argv)
            << "| estimated events within 1 px | " << within1 << " % |\n"
            << "| matching rate (left signal events within 1 px of the truth / all left signal events) | " << matchingRate
            << " % (" << acc.leftMatched << " / " << acc.leftSignal << ") |\n"
+           << "| ... over the left signal events the right camera sees (" << share(acc.leftSignal - acc.leftVisible, acc.leftSignal)
+           << " % are occluded: no matcher can match them) | " << share(acc.leftVisibleMatched, acc.leftVisible) << " % ("
+           << acc.leftVisibleMatched << " / " << acc.leftVisible << ") |\n"
            << "| left signal events more than 1 px off / rejected (ambiguous) / without a candidate | "
            << share(acc.leftWrong, acc.leftSignal) << " / " << share(acc.leftAmbiguous, acc.leftSignal) << " / "
            << share(acc.leftNoCounterpart, acc.leftSignal) << " % |\n"
