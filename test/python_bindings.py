@@ -88,6 +88,14 @@ x, y, cam = arr[:, 1], arr[:, 2], arr[:, 3]
 inner = (y >= 5) & (y < 24 - 5) & (x < 64 - 20) & np.where(cam == 0, x >= 12 + 10, x >= 10)
 assert (found & inner).sum() >= 0.9 * inner.sum(), ((found & inner).sum(), inner.sum())
 assert np.all(np.abs(disparity.ravel()[found & inner] - 12) <= 1)
+# The lifetime estimation's own time (the paper's Table I): not counted unless asked for; reset() zeroes it.
+assert not matcher.getTimeLifetimes() and matcher.getLifetimeSeconds() == 0
+matcher.setTimeLifetimes(True)
+matcher.reset()
+matcher.process(stereo)
+assert matcher.getTimeLifetimes() and matcher.getLifetimeSeconds() > 0
+matcher.reset()
+assert matcher.getLifetimeSeconds() == 0
 assert ev.getStereoModeName(ev.STEREO_DECOUPLED) == "decoupled" and ev.findStereoMode("SGBM") == ev.STEREO_FRAME_SGBM
 picture = matcher.renderDisparity(float(events[-1][0]))
 assert picture.shape[0] == 24 and picture.shape[2] == 3
