@@ -3,6 +3,7 @@
 // of this distribution and at http://opencv.org/license.html.
 
 #include "test_precomp.hpp"
+#include "test_stereo_scene_runs.hpp"
 
 namespace opencv_test { namespace {
 
@@ -35,16 +36,7 @@ std::vector<StereoEventEstimate> edgeNextToTheBorder(bool oneSided, bool mirrore
     m->setCostWindow(31);
     Mat d, flags, confidence;
     m->process(ev, d, noArray(), flags, noArray(), noArray(), confidence);
-    std::vector<StereoEventEstimate> edge;
-    for (int i = 0; i < 21; i++)
-    {
-        StereoEventEstimate e;
-        e.disparity = d.at<float>(i);
-        e.flags = flags.at<int>(i);
-        e.confidence = confidence.at<float>(i);
-        edge.push_back(e);
-    }
-    return edge;
+    return estimatesOf(d, flags, confidence, 0, 21);
 }
 
 // On every column both sensors see, the edge's window at disparity 16 equals the other sensor's: the cost there

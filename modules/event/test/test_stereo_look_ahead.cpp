@@ -24,16 +24,7 @@ std::vector<StereoEventEstimate> delayedEdge(double lookAhead, int64 delay)
     m->setLookAhead(lookAhead);
     Mat d, flags, confidence;
     m->process(ev, d, noArray(), flags, noArray(), noArray(), confidence);
-    std::vector<StereoEventEstimate> left;
-    for (int i = 1; i <= 21; i++)
-    {
-        StereoEventEstimate e;
-        e.disparity = d.at<float>(i);
-        e.flags = flags.at<int>(i);
-        e.confidence = confidence.at<float>(i);
-        left.push_back(e);
-    }
-    return left;
+    return estimatesOf(d, flags, confidence, 1, 21);
 }
 
 TEST(StereoEventMatcher_LookAhead, a_counterpart_that_fires_later_is_matched_only_within_the_look_ahead)

@@ -6,7 +6,7 @@
 #define OPENCV_EVENT_TEST_STEREO_SCENE_RUNS_HPP
 
 // COUPLED runs over a simulated scene with the outputs and the ground truth per event, and the measures the
-// stereo tests take of them.
+// stereo tests take of them; the estimates of a run of events from process()'s outputs.
 
 #include <functional>
 
@@ -42,6 +42,23 @@ inline SceneRun runScene(const std::string& scene, double ms, const std::functio
         }
     }
     return run;
+}
+
+// The estimates of events [first, first + count) of one process() call, from its disparity, flags and
+// confidence outputs.
+inline std::vector<StereoEventEstimate> estimatesOf(const Mat& disparity, const Mat& flags, const Mat& confidence,
+                                                    int first, int count)
+{
+    std::vector<StereoEventEstimate> estimates;
+    for (int i = first; i < first + count; i++)
+    {
+        StereoEventEstimate e;
+        e.disparity = disparity.at<float>(i);
+        e.flags = flags.at<int>(i);
+        e.confidence = confidence.at<float>(i);
+        estimates.push_back(e);
+    }
+    return estimates;
 }
 
 // Left signal events within 1 px of the truth, over all left signal events [%].
