@@ -8,6 +8,7 @@
 #include "opencv2/event/types.hpp"
 #include "opencv2/event/event_surface.hpp"
 #include "opencv2/event/event_statistics.hpp"
+#include "opencv2/event/event_filter.hpp"
 #include "opencv2/event/event_capture.hpp"
 #include "opencv2/event/event_writer.hpp"
 #include "opencv2/event/simulator.hpp"
@@ -30,6 +31,7 @@ through the usual InputArray / OutputArray (see event::Event for the layout and 
     @defgroup event_types Event records, packets and sensor geometry
     @defgroup event_surface Surface of active events, time surfaces and event frames
     @defgroup event_statistics Statistics of an event stream
+    @defgroup event_filter Noise filters: background activity, trails, refractory period, hot pixels, flicker
     @defgroup event_io Reading recordings and cameras
     @defgroup event_simulator Stereo event simulator with ground truth
     @defgroup event_lifetime Event lifetime and normal flow
