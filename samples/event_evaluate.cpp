@@ -25,7 +25,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include "sample_command_line.hpp"
-#include "sample_matcher_settings.hpp"
+#include "sample_algorithm_settings.hpp"
 
 #include <array>
 #include <chrono>
@@ -45,6 +45,7 @@ struct Options
     std::string scene, input, gt, method, output;
     std::string settings;  // matcher parameters, --set as given
     std::string sensorSettings;  // --sensor-set, as given
+    std::string filter, filterSettings;  // --filter, --filter-set
     double durationMs = 0, windowMs = 0;
 };
 
@@ -96,6 +97,9 @@ struct EvaluationTotals
     double absError = 0, relDepthError = 0;
     std::vector<int> errorHistogram = std::vector<int>(41, 0);  // |error| in 0.25 px bins up to 10 px
     std::vector<double> lifetimeRelErrors;
+    // --filter: signal and noise events (ground truth) it kept, and its own time.
+    int64 filterSignalKept = 0, filterNoiseKept = 0;
+    double filterSeconds = 0;
     // Non-occluded signal events with a best estimate (no rejection): its confidence, and whether it is within 1 px.
     std::vector<std::pair<float, bool>> ranked;
 };
@@ -242,6 +246,67 @@ private:
     Ptr<LifetimeEstimator> est_[2];
 };
 
+// No estimate at all: --method=none evaluates a --filter alone.
+class NoEstimate CV_FINAL : public Method
+{
+public:
+    void process(const std::vector<Event>&, MethodOutput& out) CV_OVERRIDE { out = MethodOutput(); }
+};
+
+// The method's output for the kept events of a window, spread back over the whole window: a removed event has
+// no disparity, no lifetime (the filter calls it noise) and no best estimate.
+void spreadOverWindow(const MethodOutput& kept, const std::vector<uchar>& keepMask, MethodOutput& out)
+{
+    const size_t n = keepMask.size();
+    MethodOutput all;
+    all.hasDisparity = kept.hasDisparity;
+    all.hasLifetime = kept.hasLifetime;
+    auto spread = [&](const std::vector<float>& from, std::vector<float>& to, float none) {
+        if (from.empty())
+            return;
+        to.assign(n, none);
+        for (size_t i = 0, k = 0; i < n; i++)
+            if (keepMask[i])
+                to[i] = from[k++];
+    };
+    spread(kept.disparity, all.disparity, -1.f);
+    spread(kept.lifetime, all.lifetime, 0.f);
+    spread(kept.confidence, all.confidence, 0.f);
+    spread(kept.bestDisparity, all.bestDisparity, -1.f);
+    spread(kept.bestConfidence, all.bestConfidence, 0.f);
+    if (!kept.flags.empty())
+    {
+        all.flags.assign(n, 0);
+        for (size_t i = 0, k = 0; i < n; i++)
+            if (keepMask[i])
+                all.flags[i] = kept.flags[k++];
+    }
+    out = all;
+}
+
+// Left camera's events of a window as a picture: signal ON white, signal OFF grey, noise red; and the same for
+// the events a filter kept, side by side.
+Mat drawFilterBeforeAfter(const std::vector<Event>& window, const std::vector<std::array<float, 6>>& truth,
+                          const std::vector<uchar>& keepMask, Size size)
+{
+    Mat before(size, CV_8UC3, Scalar::all(0)), after(size, CV_8UC3, Scalar::all(0));
+    for (size_t i = 0; i < window.size(); i++)
+    {
+        const Event& e = window[i];
+        if (e.camera != CAMERA_LEFT)
+            continue;
+        const bool noise = ((int)truth[i][GT_FLAGS] & GT_FLAG_NOISE) != 0;
+        const Vec3b colour = noise ? Vec3b(40, 40, 255) : e.p ? Vec3b(255, 255, 255) : Vec3b(150, 150, 150);
+        before.at<Vec3b>(e.y, e.x) = colour;
+        if (keepMask[i])
+            after.at<Vec3b>(e.y, e.x) = colour;
+    }
+    Mat pair;
+    hconcat(std::vector<Mat>{ before, Mat(size.height, 4, CV_8UC3, Scalar(80, 80, 80)), after }, pair);
+    resize(pair, pair, Size(), 2, 2, INTER_NEAREST);
+    return pair;
+}
+
 Mat colourDisparity(const Mat& d, float maxDisparity)
 {
     Mat scaled, colour;
@@ -275,7 +340,9 @@ const char* const keys =
     "{duration-ms | 500        | length of the simulated scene [ms]}"
     "{input       |            | a recording with per-event ground truth beside it}"
     "{gt          |            | the ground truth file; default: the recording's name + .gt.csv}"
-    "{method      | sgbm       | coupled, decoupled, fixed, sgbm (StereoEventMatcher modes) or lifetime}"
+    "{method      | sgbm       | coupled, decoupled, fixed, sgbm (StereoEventMatcher modes), lifetime, or none (evaluates --filter alone)}"
+    "{filter      |            | a noise filter in front of the method: background_activity, trail, refractory, hot_pixels, anti_flicker}"
+    "{filter-set  |            | filter parameters NAME=VALUE, comma separated (FileStorage names, e.g. correlationTime=5000)}"
     "{window-ms   | 33         | evaluation window (and SGBM frame) [ms]}"
     "{output      | evaluation | output folder}"
     "{set         |            | matcher parameters NAME=VALUE, comma separated (FileStorage names, e.g. uniquenessRatio=20)}"
@@ -329,8 +396,10 @@ int main(int argc, char** argv)
         o.output = cmd.get<std::string>("output");
         o.settings = cmd.get<std::string>("set");
         o.sensorSettings = cmd.get<std::string>("sensor-set");
-        if (o.method != "lifetime" && findStereoMode(o.method) < 0)
-            throw std::runtime_error("--method=" + o.method + ": available methods: coupled, decoupled, fixed, sgbm, lifetime");
+        o.filter = cmd.get<std::string>("filter");
+        o.filterSettings = cmd.get<std::string>("filter-set");
+        if (o.method != "lifetime" && o.method != "none" && findStereoMode(o.method) < 0)
+            throw std::runtime_error("--method=" + o.method + ": available methods: coupled, decoupled, fixed, sgbm, lifetime, none");
         if (!utils::fs::createDirectories(o.output))
             throw std::runtime_error(o.output + ": cannot create the output folder");
 
@@ -359,7 +428,14 @@ int main(int argc, char** argv)
             truthFile.reset(new TruthSource(o.gt.empty() ? o.input + ".gt.csv" : o.gt));
         }
         std::unique_ptr<Method> method;
-        if (o.method == "lifetime")
+        Ptr<EventFilter> filter = createSampleFilter(o.filter, o.filterSettings, size);
+        std::vector<uchar> keepMask;
+        std::vector<Event> keptEvents;
+        MethodOutput keptEstimate;
+        Mat filterPicture;
+        if (o.method == "none")
+            method.reset(new NoEstimate());
+        else if (o.method == "lifetime")
             method.reset(new Lifetime(size));
         else
             method.reset(new Matcher(size, findStereoMode(o.method), o.windowMs * 1000, o.settings));
@@ -392,10 +468,36 @@ int main(int argc, char** argv)
                 for (const Event& e : window)
                     truth.push_back(truthFile->next(e));
             }
-            const auto t0 = std::chrono::steady_clock::now();
-            method->process(window, estimate);
-            seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-            method->processUnfiltered(window, estimate);
+            if (filter)
+            {
+                // The method sees the kept events only; every event still counts (a removed signal event is
+                // one the method did not match).
+                const auto f0 = std::chrono::steady_clock::now();
+                Mat mask;
+                filter->filter(window, keptEvents, mask);
+                acc.filterSeconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - f0).count();
+                keepMask.assign(mask.begin<uchar>(), mask.end<uchar>());
+                const auto t0 = std::chrono::steady_clock::now();
+                method->process(keptEvents, keptEstimate);
+                seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+                method->processUnfiltered(keptEvents, keptEstimate);
+                spreadOverWindow(keptEstimate, keepMask, estimate);
+                for (size_t i = 0; i < window.size(); i++)
+                {
+                    const bool noise = ((int)truth[i][GT_FLAGS] & GT_FLAG_NOISE) != 0;
+                    acc.filterSignalKept += keepMask[i] && !noise;
+                    acc.filterNoiseKept += keepMask[i] && noise;
+                }
+                if (!window.empty())
+                    filterPicture = drawFilterBeforeAfter(window, truth, keepMask, size);
+            }
+            else
+            {
+                const auto t0 = std::chrono::steady_clock::now();
+                method->process(window, estimate);
+                seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+                method->processUnfiltered(window, estimate);
+            }
 
             lastEstimate = Mat::zeros(size, CV_32F);
             lastTruth = Mat::zeros(size, CV_32F);
@@ -518,6 +620,19 @@ int main(int argc, char** argv)
             << "events_with_lifetime_left," << acc.withLifetimeCamera[0] << "\n"
             << "events_with_lifetime_right," << acc.withLifetimeCamera[1] << "\n"
             << "time_per_event_us," << usPerEvent << "\n";
+        // The filter's figures: signal kept (recall of the signal), noise removed, and the share of signal
+        // among the kept events (precision).
+        const int64 noiseEvents = acc.events - acc.signal;
+        const double signalKept = share(acc.filterSignalKept, acc.signal);
+        const double noiseRemoved = share(noiseEvents - acc.filterNoiseKept, noiseEvents);
+        const double keptPrecision = share(acc.filterSignalKept, acc.filterSignalKept + acc.filterNoiseKept);
+        const double filterMevPerS = acc.filterSeconds > 0 ? (double)acc.events / acc.filterSeconds * 1e-6 : 0;
+        if (filter)
+            csv << "filter," << o.filter << "\n"
+                << "filter_signal_kept_percent," << signalKept << "\n"
+                << "filter_noise_removed_percent," << noiseRemoved << "\n"
+                << "filter_kept_signal_share_percent," << keptPrecision << "\n"
+                << "filter_mev_per_s," << filterMevPerS << "\n";
         std::ofstream md(o.output + "/report.md");
         md << "# Evaluation: " << o.method << " on " << (sim ? "simulated scene " + o.scene : o.input) << "\n\n"
            << "Windows of " << o.windowMs << " ms; disparity metrics over non-occluded signal events (ground truth "
@@ -544,7 +659,12 @@ int main(int argc, char** argv)
            << "| noise precision / recall | " << precision << " / " << recall << (estimate.hasLifetime ? " %" : " (" + o.method + " does not classify noise)") << " |\n"
            << "| events with a lifetime (left / right) | " << acc.withLifetime << " (" << acc.withLifetimeCamera[0]
            << " / " << acc.withLifetimeCamera[1] << ") |\n"
-           << "| time per event | " << usPerEvent << " us |\n\n"
+           << "| time per event | " << usPerEvent << " us |\n";
+        if (filter)
+            md << "| filter " << o.filter << ": signal kept / noise removed / signal share of the kept events | "
+               << signalKept << " / " << noiseRemoved << " / " << keptPrecision << " % (" << noiseEvents << " noise events) |\n"
+               << "| filter speed | " << filterMevPerS << " Mev/s |\n";
+        md << "\n"
            << "![error histogram](disparity_error_histogram.png)\n\n"
            << "![estimate | ground truth](disparity_vs_truth.png)\n";
         if (!acc.ranked.empty())
@@ -569,6 +689,14 @@ int main(int argc, char** argv)
         hconcat(colourDisparity(lastEstimate, maxDisparity), colourDisparity(lastTruth, maxDisparity), pair);
         resize(pair, pair, Size(), 2, 2, INTER_NEAREST);
         imwrite(o.output + "/disparity_vs_truth.png", pair);
+        if (!filterPicture.empty())
+        {
+            imwrite(o.output + "/filter_before_after.png", filterPicture);
+            md << "\n![left events of the last window: all | kept by " << o.filter << " (signal ON white, OFF grey, noise red)](filter_before_after.png)\n";
+            std::cout << "filter " << o.filter << ": signal kept " << signalKept << " %, noise removed " << noiseRemoved
+                      << " % of " << noiseEvents << ", signal share of kept " << keptPrecision << " %, "
+                      << filterMevPerS << " Mev/s\n";
+        }
         std::cout << "density " << density << " %, within 1 px " << within1 << " %, MAE " << mae << " px, "
                   << usPerEvent << " us/event; report in " << o.output << "/report.md\n";
         return 0;

@@ -2,9 +2,11 @@
 //
 //   event_player FILE [--mode=surface|frames] [--window-ms=33] [--tau-ms=30] [--output=DIR] [--video=FILE.avi]
 //                     [--show] [--start-ms=T] [--max-frames=N] [--sensor=WxH|NAME] [--one-based]
+//                     [--filter=NAME [--filter-set=NAME=VALUE,...]]
 //
 // Frames go to DIR/frame_NNNNN.png (default), to an MJPG video with --video, and/or to a window with --show.
-// Stereo recordings are shown left | right. A progress bar runs on stderr.
+// Stereo recordings are shown left | right. With --filter, only the events a noise filter keeps are shown.
+// A progress bar runs on stderr.
 
 #include <opencv2/event.hpp>
 #include <opencv2/core/utils/filesystem.hpp>  // after a core header: it needs CV_EXPORTS
@@ -13,6 +15,7 @@
 #include <opencv2/imgproc.hpp>
 #include <opencv2/videoio.hpp>
 
+#include "sample_algorithm_settings.hpp"
 #include "sample_command_line.hpp"
 #include "sample_progress.hpp"
 
@@ -26,7 +29,7 @@ namespace {
 
 struct Options
 {
-    std::string input, output, video, mode;
+    std::string input, output, video, mode, filter, filterSettings;
     double windowMs = 0, tauMs = 0, startMs = -1;
     int maxFrames = -1;
     bool show = false, oneBased = false;
@@ -67,7 +70,9 @@ const char* const keys =
     "{video      |               | write an MJPG video instead of PNG files}"
     "{show       | false         | show the frames in a window}"
     "{sensor     |               | sensor size WxH or a name (DVS128, DAVIS240, DAVIS346) when the format has none}"
-    "{one-based  | false         | text recordings count pixels from 1}";
+    "{one-based  | false         | text recordings count pixels from 1}"
+    "{filter     |               | show only the events a noise filter keeps: background_activity, trail, refractory, hot_pixels, anti_flicker}"
+    "{filter-set |               | filter parameters NAME=VALUE, comma separated (e.g. correlationTime=10000)}";
 
 bool parse(int argc, char** argv, Options& o)
 {
@@ -87,6 +92,8 @@ bool parse(int argc, char** argv, Options& o)
     if (cmd.has("sensor"))
         o.sensor = parseSensorSize(cmd.get<std::string>("sensor"));
     o.oneBased = cmd.has("one-based");
+    o.filter = cmd.get<std::string>("filter");
+    o.filterSettings = cmd.get<std::string>("filter-set");
     if (o.input.empty())
         throw std::runtime_error("no recording given: event_player FILE [options] (--help lists them)");
     if (o.mode != "surface" && o.mode != "frames")
@@ -119,6 +126,7 @@ int main(int argc, char** argv)
         if (writePngs && !utils::fs::createDirectories(o.output))
             throw std::runtime_error(o.output + ": cannot create the output folder");
 
+        Ptr<EventFilter> filter = createSampleFilter(o.filter, o.filterSettings, size);
         Ptr<EventSurface> surface[2] = { EventSurface::create(size), EventSurface::create(size) };
         VideoWriter video;
         std::vector<Event> packet;
@@ -128,6 +136,8 @@ int main(int argc, char** argv)
         {
             surface[0]->clearCounts();
             surface[1]->clearCounts();
+            if (filter)
+                filter->filter(packet, packet);
             for (const Event& e : packet)
                 surface[stereo ? e.camera : 0]->update(e);
             const int64 now = (int64)cap.get(EVENT_CAP_PROP_POS_US);
@@ -159,6 +169,8 @@ int main(int argc, char** argv)
         progress.finish(cap.get(EVENT_CAP_PROP_PROGRESS), std::to_string(frames) + " frames");
         std::cerr << cap.get(EVENT_CAP_PROP_EVENTS_DELIVERED) << " events, " << frames << " frames of " << o.windowMs
                   << " ms" << (writePngs ? " in " + o.output : std::string()) << "\n";
+        if (filter)
+            std::cerr << o.filter << " kept " << filter->getKeptCount() << " of " << filter->getProcessedCount() << " events\n";
         return 0;
     }
     catch (const std::exception& e)

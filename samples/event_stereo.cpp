@@ -5,6 +5,7 @@
 //                [--left-camera-value=0|1] [--mode=coupled|decoupled|fixed|sgbm]
 //                [--min-disparity=PX] [--max-disparity=PX] [--frame-ms=MS] [--threads=N] [--no-csv]
 //                [--all-frames] [--output=DIR] [--set=NAME=VALUE,...] [--scene=NAME --duration-ms=MS]
+//                [--filter=NAME [--filter-set=NAME=VALUE,...]]
 //                (no input: simulate, with ground truth)
 //
 // Writes into DIR: events.csv (t,x,y,p,camera,disparity,depth,lifetime,flags,confidence per event, x/y rectified),
@@ -23,7 +24,7 @@
 #include <opencv2/videoio.hpp>
 
 #include "sample_command_line.hpp"
-#include "sample_matcher_settings.hpp"
+#include "sample_algorithm_settings.hpp"
 #include "sample_progress.hpp"
 
 #include <algorithm>
@@ -41,7 +42,7 @@ namespace {
 struct Options
 {
     // Defaults: the keys below.
-    std::string input, left, right, calib, output, scene, mode, settings;
+    std::string input, left, right, calib, output, scene, mode, settings, filter, filterSettings;
     bool live = false, csv = true, allFrames = false;
     Size sensor;
     int leftCameraValue = 0, minDisparity = 0, maxDisparity = 0;
@@ -69,7 +70,9 @@ const char* const keys =
     "{output            | output/event_stereo | output folder}"
     "{scene             | boxes      | simulated scene when no input is given: boxes, boxes_fast, walking, low_contrast (realistic); plane, two_planes, moving_line, faint_line, cluttered}"
     "{duration-ms       | 1000       | length of the simulated scene [ms]}"
-    "{set               |            | matcher parameters NAME=VALUE, comma separated (e.g. uniquenessRatio=20,costWindow=11)}";
+    "{set               |            | matcher parameters NAME=VALUE, comma separated (e.g. uniquenessRatio=20,costWindow=11)}"
+    "{filter            |            | a noise filter in front of the matcher: background_activity, trail, refractory, hot_pixels, anti_flicker}"
+    "{filter-set        |            | filter parameters NAME=VALUE, comma separated (e.g. correlationTime=10000)}";
 
 bool parse(int argc, char** argv, Options& o)
 {
@@ -99,6 +102,8 @@ bool parse(int argc, char** argv, Options& o)
     o.scene = cmd.get<std::string>("scene");
     o.durationMs = cmd.get<double>("duration-ms");
     o.settings = cmd.get<std::string>("set");
+    o.filter = cmd.get<std::string>("filter");
+    o.filterSettings = cmd.get<std::string>("filter-set");
     if (findStereoMode(o.mode) < 0)
         throw std::runtime_error("--mode=" + o.mode + ": use coupled, decoupled, fixed or sgbm");
     if ((o.left.empty()) != (o.right.empty()))
@@ -335,6 +340,7 @@ int main(int argc, char** argv)
         matcher->setMaxDisparity(opt.maxDisparity);
         matcher->setNumThreads(opt.threads);
         applyMatcherSettings(matcher, opt.settings);
+        Ptr<EventFilter> filter = createSampleFilter(opt.filter, opt.filterSettings, size);
         if (!opt.calib.empty())
             matcher->loadCalibration(opt.calib);
         else if (source.hasTruth())
@@ -356,14 +362,32 @@ int main(int argc, char** argv)
         int64 candidates = 0, estimated = 0, within1 = 0, pictures = 0, windows = 0;
         int lastEighth = 0;
         SampleProgress progress;
-        double absError = 0, seconds = 0;
+        double absError = 0, seconds = 0, filterSeconds = 0;
+        int64 filtered = 0;
         std::vector<Event> packet;
+        Mat keepMask;
         Mat truth, disparity, lifetime, flags, depth, confidence, truthDisparity;
         double windowEnd = 0;
         char line[160];
         RowAlignmentCheck alignment(size, opt.minDisparity, opt.maxDisparity, opt.calib);
         while (source.next(packet, truth, windowEnd))
         {
+            if (filter)
+            {
+                // The matcher sees the kept events; the ground truth follows them.
+                filtered += (int64)packet.size();
+                const int64 f0 = getTickCount();
+                filter->filter(packet, packet, keepMask);
+                filterSeconds += (double)(getTickCount() - f0) / getTickFrequency();
+                if (source.hasTruth())
+                {
+                    Mat keptTruth;
+                    for (int i = 0; i < keepMask.rows; i++)
+                        if (keepMask.at<uchar>(i))
+                            keptTruth.push_back(truth.row(i));
+                    truth = keptTruth;
+                }
+            }
             alignment.add(packet);
             const int64 t0 = getTickCount();
             matcher->process(packet, disparity, lifetime, flags, depth, noArray(), confidence);
@@ -458,6 +482,8 @@ int main(int argc, char** argv)
              << "| source | " << source.name() << " |\n"
              << "| sensor | " << size.width << " x " << size.height << (opt.calib.empty() ? "" : ", calibration " + opt.calib) << " |\n"
              << "| mode | " << opt.mode << ", disparities " << opt.minDisparity << ".." << opt.maxDisparity << " px |\n"
+             << (filter ? "| filter | " + opt.filter + ": kept " + cv::format("%lld of %lld events (%.1f %%), %.1f Mev/s", (long long)events,
+                                    (long long)filtered, pct(events, filtered), (double)filtered / std::max(1e-9, filterSeconds) / 1e6) + " |\n" : std::string())
              << "| events | " << events << " (left " << perCamera[0] << ", right " << perCamera[1] << ") |\n"
              << "| input events outside the sensor (not processed) / going back in time (clamped) | "
              << outside << " / " << backwards << " |\n"

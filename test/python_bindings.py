@@ -99,4 +99,14 @@ assert matcher.getLifetimeSeconds() == 0
 assert ev.getStereoModeName(ev.STEREO_DECOUPLED) == "decoupled" and ev.findStereoMode("SGBM") == ev.STEREO_FRAME_SGBM
 picture = matcher.renderDisparity(float(events[-1][0]))
 assert picture.shape[0] == 24 and picture.shape[2] == 3
+# Noise filters: an isolated event goes, a column of neighbours stays (background activity).
+ba = ev.BackgroundActivityFilter_create((16, 8), 2000.0)
+column = ev.packEvents(np.array([1000.0, 1000, 1000, 50000]), np.array([3, 3, 3, 12], np.int32),
+                       np.array([2, 3, 4, 6], np.int32), np.ones(4, np.uint8))
+kept, mask = ba.filter(column)
+assert list(mask.ravel()) == [0, 255, 255, 0], mask.ravel()
+assert kept.shape[0] == 2 and ba.getKeptCount() == 2 and ba.getProcessedCount() == 4
+assert "anti_flicker" in ev.getEventFilterNames()
+hot = ev.createEventFilter("hot_pixels", (16, 8))
+assert hot.getDefaultName() == "HotPixelFilter"
 print("python bindings: cv2.event OK")
