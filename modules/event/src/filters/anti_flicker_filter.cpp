@@ -51,8 +51,8 @@ public:
 
     void write(FileStorage& fs) const CV_OVERRIDE
     {
-        writeFormat(fs);
-        fs << "sensorWidth" << size_.width << "sensorHeight" << size_.height << "minFrequency" << minHz_
+        writeSensorSize(fs);
+        fs << "minFrequency" << minHz_
            << "maxFrequency" << maxHz_ << "minCycles" << minCycles_;
     }
 
@@ -62,17 +62,12 @@ public:
                          fn["maxFrequency"].empty() ? maxHz_ : (double)fn["maxFrequency"]);
         if (!fn["minCycles"].empty())
             setMinCycles((int)fn["minCycles"]);
-        const Size s(fn["sensorWidth"].empty() ? size_.width : (int)fn["sensorWidth"],
-                     fn["sensorHeight"].empty() ? size_.height : (int)fn["sensorHeight"]);
-        if (s != size_)
-            setSensorSize(s);
+        readSensorSize(fn);
     }
 
     String getDefaultName() const CV_OVERRIDE { return "AntiFlickerFilter"; }
 
 protected:
-    const char* filterName() const CV_OVERRIDE { return "AntiFlickerFilter"; }
-
     static FlickerPixel emptyPixel() { return FlickerPixel{ { NEVER, NEVER }, 2, 0 }; }
 
     void resetState() CV_OVERRIDE

@@ -24,26 +24,20 @@ public:
 
     void write(FileStorage& fs) const CV_OVERRIDE
     {
-        writeFormat(fs);
-        fs << "sensorWidth" << size_.width << "sensorHeight" << size_.height
-           << "correlationTime" << (double)correlationTime_;
+        writeSensorSize(fs);
+        fs << "correlationTime" << (double)correlationTime_;
     }
 
     void read(const FileNode& fn) CV_OVERRIDE
     {
         if (!fn["correlationTime"].empty())
             setCorrelationTime((double)fn["correlationTime"]);
-        const Size s(fn["sensorWidth"].empty() ? size_.width : (int)fn["sensorWidth"],
-                     fn["sensorHeight"].empty() ? size_.height : (int)fn["sensorHeight"]);
-        if (s != size_)
-            setSensorSize(s);
+        readSensorSize(fn);
     }
 
     String getDefaultName() const CV_OVERRIDE { return "BackgroundActivityFilter"; }
 
 protected:
-    const char* filterName() const CV_OVERRIDE { return "BackgroundActivityFilter"; }
-
     // One border pixel all round, never written, so that the 8 neighbours need no bounds checks.
     int stride() const { return size_.width + 2; }
 

@@ -28,7 +28,7 @@ public:
     void setSensorSize(Size size) CV_OVERRIDE
     {
         if (size.width <= 0 || size.height <= 0 || size.width > SHRT_MAX + 1 || size.height > SHRT_MAX + 1)
-            CV_Error_(Error::StsBadArg, ("%s: sensor size %d x %d is not a valid pixel array", filterName(),
+            CV_Error_(Error::StsBadArg, ("%s: sensor size %d x %d is not a valid pixel array", this->getDefaultName().c_str(),
                                          size.width, size.height));
         size_ = size;
         cameras_ = 0;
@@ -81,14 +81,28 @@ public:
 protected:
     EventFilterEngine() : size_(0, 0), cameras_(0), processed_(0), kept_(0) { lastTime_[0] = lastTime_[1] = NEVER; }
 
-    /** The filter's name for messages ("BackgroundActivityFilter"). */
-    virtual const char* filterName() const = 0;
     /** Empties the per-pixel state of the cameras allocated so far. */
     virtual void resetState() = 0;
     /** Allocates the empty per-pixel state of camera @p camera (0, then 1 when a right event first comes). */
     virtual void addCamera(int camera) = 0;
     /** Writes keep[i] = 255 or 0 for the n valid events and returns how many are kept. */
     virtual int decide(const Event* e, int n, uchar* keep) = 0;
+
+    /** Writes the format header and the sensor size; a filter writes its own parameters after them. */
+    void writeSensorSize(FileStorage& fs) const
+    {
+        this->writeFormat(fs);
+        fs << "sensorWidth" << size_.width << "sensorHeight" << size_.height;
+    }
+
+    /** Takes the sensor size from @p fn where stored (a change resets the filter). */
+    void readSensorSize(const FileNode& fn)
+    {
+        const Size s(fn["sensorWidth"].empty() ? size_.width : (int)fn["sensorWidth"],
+                     fn["sensorHeight"].empty() ? size_.height : (int)fn["sensorHeight"]);
+        if (s != size_)
+            setSensorSize(s);
+    }
 
     int pixelCount() const { return size_.area(); }
     int cameraCount() const { return cameras_; }
@@ -103,19 +117,19 @@ protected:
             const Event& ev = e[i];
             if (ev.camera > 1)
                 CV_Error_(Error::StsBadArg, ("%s: event #%d (t=%lld us, x=%d, y=%d) has camera %d; expected "
-                                             "CAMERA_LEFT (0) or CAMERA_RIGHT (1)", filterName(), i,
+                                             "CAMERA_LEFT (0) or CAMERA_RIGHT (1)", this->getDefaultName().c_str(), i,
                                              (long long)ev.t, ev.x, ev.y, ev.camera));
             if ((unsigned)ev.x >= (unsigned)size_.width || (unsigned)ev.y >= (unsigned)size_.height)
                 CV_Error_(Error::StsOutOfRange, ("%s: event #%d at (x=%d, y=%d), t=%lld us, camera %d, is outside "
-                                                 "the %d x %d sensor", filterName(), i, ev.x, ev.y, (long long)ev.t,
+                                                 "the %d x %d sensor", this->getDefaultName().c_str(), i, ev.x, ev.y, (long long)ev.t,
                                                  ev.camera, size_.width, size_.height));
             if (ev.t == NEVER)
                 CV_Error_(Error::StsOutOfRange, ("%s: event #%d (x=%d, y=%d) has t = INT64_MIN, which is reserved "
-                                                 "for EventSurface::NO_EVENT", filterName(), i, ev.x, ev.y));
+                                                 "for EventSurface::NO_EVENT", this->getDefaultName().c_str(), i, ev.x, ev.y));
             if (ev.t < last[ev.camera])
                 CV_Error_(Error::StsBadArg, ("%s: event #%d at t=%lld us (x=%d, y=%d, camera %d) is earlier than the "
                                              "previous event of its camera (t=%lld us): events must come in time "
-                                             "order", filterName(), i, (long long)ev.t, ev.x, ev.y, ev.camera,
+                                             "order", this->getDefaultName().c_str(), i, (long long)ev.t, ev.x, ev.y, ev.camera,
                                              (long long)last[ev.camera]));
             last[ev.camera] = ev.t;
             cameras = std::max(cameras, ev.camera + 1);
@@ -127,7 +141,7 @@ protected:
     int64 positiveMicroseconds(double us, const char* what) const
     {
         if (!(us > 0) || us > 1e15)
-            CV_Error_(Error::StsBadArg, ("%s: %s %g us; must be > 0 (and below 1e15)", filterName(), what, us));
+            CV_Error_(Error::StsBadArg, ("%s: %s %g us; must be > 0 (and below 1e15)", this->getDefaultName().c_str(), what, us));
         return std::max<int64>(1, (int64)std::llround(us));
     }
 

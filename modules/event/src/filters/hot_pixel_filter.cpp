@@ -132,8 +132,8 @@ public:
 
     void write(FileStorage& fs) const CV_OVERRIDE
     {
-        writeFormat(fs);
-        fs << "sensorWidth" << size_.width << "sensorHeight" << size_.height << "minRate" << minRate_
+        writeSensorSize(fs);
+        fs << "minRate" << minRate_
            << "relativeRate" << relativeRate_ << "learningTime" << (double)learningTime_;
         for (int c = 0; c < 2; c++)
             fs << CAMERA_MASK_NAMES[c] << Mat(size_, CV_8U, (void*)masks_[c].data());
@@ -147,10 +147,7 @@ public:
             setRelativeRate((double)fn["relativeRate"]);
         if (!fn["learningTime"].empty())
             setLearningTime((double)fn["learningTime"]);
-        const Size s(fn["sensorWidth"].empty() ? size_.width : (int)fn["sensorWidth"],
-                     fn["sensorHeight"].empty() ? size_.height : (int)fn["sensorHeight"]);
-        if (s != size_)
-            setSensorSize(s);
+        readSensorSize(fn);
         for (int c = 0; c < 2; c++)
         {
             if (fn[CAMERA_MASK_NAMES[c]].empty())
@@ -164,8 +161,6 @@ public:
     String getDefaultName() const CV_OVERRIDE { return "HotPixelFilter"; }
 
 protected:
-    const char* filterName() const CV_OVERRIDE { return "HotPixelFilter"; }
-
     void resetState() CV_OVERRIDE
     {
         for (std::vector<uint32_t>& k : counts_)

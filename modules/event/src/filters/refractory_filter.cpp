@@ -24,25 +24,20 @@ public:
 
     void write(FileStorage& fs) const CV_OVERRIDE
     {
-        writeFormat(fs);
-        fs << "sensorWidth" << size_.width << "sensorHeight" << size_.height << "period" << (double)period_;
+        writeSensorSize(fs);
+        fs << "period" << (double)period_;
     }
 
     void read(const FileNode& fn) CV_OVERRIDE
     {
         if (!fn["period"].empty())
             setPeriod((double)fn["period"]);
-        const Size s(fn["sensorWidth"].empty() ? size_.width : (int)fn["sensorWidth"],
-                     fn["sensorHeight"].empty() ? size_.height : (int)fn["sensorHeight"]);
-        if (s != size_)
-            setSensorSize(s);
+        readSensorSize(fn);
     }
 
     String getDefaultName() const CV_OVERRIDE { return "RefractoryFilter"; }
 
 protected:
-    const char* filterName() const CV_OVERRIDE { return "RefractoryFilter"; }
-
     void resetState() CV_OVERRIDE
     {
         for (std::vector<int64>& t : lastKept_)

@@ -24,25 +24,20 @@ public:
 
     void write(FileStorage& fs) const CV_OVERRIDE
     {
-        writeFormat(fs);
-        fs << "sensorWidth" << size_.width << "sensorHeight" << size_.height << "threshold" << (double)threshold_;
+        writeSensorSize(fs);
+        fs << "threshold" << (double)threshold_;
     }
 
     void read(const FileNode& fn) CV_OVERRIDE
     {
         if (!fn["threshold"].empty())
             setThreshold((double)fn["threshold"]);
-        const Size s(fn["sensorWidth"].empty() ? size_.width : (int)fn["sensorWidth"],
-                     fn["sensorHeight"].empty() ? size_.height : (int)fn["sensorHeight"]);
-        if (s != size_)
-            setSensorSize(s);
+        readSensorSize(fn);
     }
 
     String getDefaultName() const CV_OVERRIDE { return "TrailFilter"; }
 
 protected:
-    const char* filterName() const CV_OVERRIDE { return "TrailFilter"; }
-
     void resetState() CV_OVERRIDE
     {
         for (int c = 0; c < 2; c++)
