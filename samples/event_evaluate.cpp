@@ -92,13 +92,17 @@ struct EvaluationTotals
     // Where the other left signal events go: a disparity more than 1 px off, rejected (STEREO_AMBIGUOUS),
     // no candidate (STEREO_NO_COUNTERPART); the rest had neither (outside the rectified image, or 0).
     int64 leftWrong = 0, leftAmbiguous = 0, leftNoCounterpart = 0;
+    // The matching rate over the left signal events motion caused (flicker left out): with a flickering lamp
+    // in view, what a user's moving scene gets.
+    int64 leftMotion = 0, leftMotionMatched = 0;
     int64 withLifetimeCamera[2] = { 0, 0 };
     int64 noiseTrue = 0, noiseFlagged = 0, noiseCorrect = 0;
     double absError = 0, relDepthError = 0;
     std::vector<int> errorHistogram = std::vector<int>(41, 0);  // |error| in 0.25 px bins up to 10 px
     std::vector<double> lifetimeRelErrors;
-    // --filter: signal and noise events (ground truth) it kept, and its own time.
-    int64 filterSignalKept = 0, filterNoiseKept = 0;
+    // --filter: what it kept of the signal (motion), of the noise and of the flicker (ground truth flags), and
+    // its own time.
+    int64 filterSignal = 0, filterSignalKept = 0, filterNoiseKept = 0, flicker = 0, filterFlickerKept = 0;
     double filterSeconds = 0;
     // Non-occluded signal events with a best estimate (no rejection): its confidence, and whether it is within 1 px.
     std::vector<std::pair<float, bool>> ranked;
@@ -284,8 +288,8 @@ void spreadOverWindow(const MethodOutput& kept, const std::vector<uchar>& keepMa
     out = all;
 }
 
-// Left camera's events of a window as a picture: signal ON white, signal OFF grey, noise red; and the same for
-// the events a filter kept, side by side.
+// Left camera's events of a window as a picture: signal ON white, signal OFF grey, noise red, flicker blue; and
+// the same for the events a filter kept, side by side.
 Mat drawFilterBeforeAfter(const std::vector<Event>& window, const std::vector<std::array<float, 6>>& truth,
                           const std::vector<uchar>& keepMask, Size size)
 {
@@ -295,8 +299,10 @@ Mat drawFilterBeforeAfter(const std::vector<Event>& window, const std::vector<st
         const Event& e = window[i];
         if (e.camera != CAMERA_LEFT)
             continue;
-        const bool noise = ((int)truth[i][GT_FLAGS] & GT_FLAG_NOISE) != 0;
-        const Vec3b colour = noise ? Vec3b(40, 40, 255) : e.p ? Vec3b(255, 255, 255) : Vec3b(150, 150, 150);
+        const int flags = (int)truth[i][GT_FLAGS];
+        const Vec3b colour = (flags & GT_FLAG_NOISE) ? Vec3b(40, 40, 255)
+                           : (flags & GT_FLAG_FLICKER) ? Vec3b(255, 120, 0)
+                           : e.p ? Vec3b(255, 255, 255) : Vec3b(150, 150, 150);
         before.at<Vec3b>(e.y, e.x) = colour;
         if (keepMask[i])
             after.at<Vec3b>(e.y, e.x) = colour;
@@ -357,7 +363,7 @@ void applySimulatorSetting(SimulatorSettings& s, const std::string& name, double
         { "noiseRateHz", &s.noiseRateHz }, { "latencyUs", &s.latencyUs }, { "latencySigmaUs", &s.latencySigmaUs },
         { "jitterUs", &s.jitterUs }, { "hotPixelShare", &s.hotPixelShare }, { "hotPixelRateHz", &s.hotPixelRateHz },
         { "leakRateHz", &s.leakRateHz }, { "rightRowOffset", &s.rightRowOffset }, { "rightRollRad", &s.rightRollRad },
-        { "maxPixelStep", &s.maxPixelStep }
+        { "maxPixelStep", &s.maxPixelStep }, { "flickerFrequencyHz", &s.flickerFrequencyHz }
     };
     for (const auto& f : fields)
         if (name == f.first)
@@ -484,9 +490,13 @@ int main(int argc, char** argv)
                 spreadOverWindow(keptEstimate, keepMask, estimate);
                 for (size_t i = 0; i < window.size(); i++)
                 {
-                    const bool noise = ((int)truth[i][GT_FLAGS] & GT_FLAG_NOISE) != 0;
-                    acc.filterSignalKept += keepMask[i] && !noise;
+                    const int flags = (int)truth[i][GT_FLAGS];
+                    const bool noise = (flags & GT_FLAG_NOISE) != 0, flicker = (flags & GT_FLAG_FLICKER) != 0;
+                    acc.filterSignal += !noise && !flicker;
+                    acc.filterSignalKept += keepMask[i] && !noise && !flicker;
                     acc.filterNoiseKept += keepMask[i] && noise;
+                    acc.flicker += flicker;
+                    acc.filterFlickerKept += keepMask[i] && flicker;
                 }
                 if (!window.empty())
                     filterPicture = drawFilterBeforeAfter(window, truth, keepMask, size);
@@ -527,6 +537,7 @@ int main(int argc, char** argv)
                 if (window[i].camera == CAMERA_LEFT)
                 {
                     acc.leftSignal++;
+                    acc.leftMotion += !(flags & GT_FLAG_FLICKER);
                     const bool visible = !(flags & GT_FLAG_OCCLUDED);
                     acc.leftVisible += visible;
                     if (estimate.hasDisparity && estimate.disparity[i] > 0)
@@ -534,6 +545,7 @@ int main(int argc, char** argv)
                         const bool within = std::abs(estimate.disparity[i] - g[GT_DISPARITY]) <= 1.0;
                         acc.leftMatched += within;
                         acc.leftVisibleMatched += within && visible;
+                        acc.leftMotionMatched += within && !(flags & GT_FLAG_FLICKER);
                         acc.leftWrong += !within;
                     }
                     else if (!estimate.flags.empty())
@@ -604,6 +616,7 @@ int main(int argc, char** argv)
             << "matching_rate_percent," << matchingRate << "\n"
             << "left_occluded_percent," << share(acc.leftSignal - acc.leftVisible, acc.leftSignal) << "\n"
             << "matching_rate_visible_percent," << share(acc.leftVisibleMatched, acc.leftVisible) << "\n"
+            << "matching_rate_motion_percent," << share(acc.leftMotionMatched, acc.leftMotion) << "\n"
             << "left_wrong_percent," << share(acc.leftWrong, acc.leftSignal) << "\n"
             << "left_ambiguous_percent," << share(acc.leftAmbiguous, acc.leftSignal) << "\n"
             << "left_no_counterpart_percent," << share(acc.leftNoCounterpart, acc.leftSignal) << "\n"
@@ -620,17 +633,20 @@ int main(int argc, char** argv)
             << "events_with_lifetime_left," << acc.withLifetimeCamera[0] << "\n"
             << "events_with_lifetime_right," << acc.withLifetimeCamera[1] << "\n"
             << "time_per_event_us," << usPerEvent << "\n";
-        // The filter's figures: signal kept (recall of the signal), noise removed, and the share of signal
-        // among the kept events (precision).
-        const int64 noiseEvents = acc.events - acc.signal;
-        const double signalKept = share(acc.filterSignalKept, acc.signal);
+        // The filter's figures: signal kept (recall of the motion's events), noise and flicker removed, and the
+        // share of signal among the kept events (precision).
+        const int64 noiseEvents = acc.noiseTrue;
+        const double signalKept = share(acc.filterSignalKept, acc.filterSignal);
         const double noiseRemoved = share(noiseEvents - acc.filterNoiseKept, noiseEvents);
-        const double keptPrecision = share(acc.filterSignalKept, acc.filterSignalKept + acc.filterNoiseKept);
+        const double flickerRemoved = share(acc.flicker - acc.filterFlickerKept, acc.flicker);
+        const double keptPrecision = share(acc.filterSignalKept, acc.filterSignalKept + acc.filterNoiseKept + acc.filterFlickerKept);
         const double filterMevPerS = acc.filterSeconds > 0 ? (double)acc.events / acc.filterSeconds * 1e-6 : 0;
         if (filter)
             csv << "filter," << o.filter << "\n"
                 << "filter_signal_kept_percent," << signalKept << "\n"
                 << "filter_noise_removed_percent," << noiseRemoved << "\n"
+                << "flicker_events," << acc.flicker << "\n"
+                << "filter_flicker_removed_percent," << (acc.flicker ? std::to_string(flickerRemoved) : "n/a") << "\n"
                 << "filter_kept_signal_share_percent," << keptPrecision << "\n"
                 << "filter_mev_per_s," << filterMevPerS << "\n";
         std::ofstream md(o.output + "/report.md");
@@ -646,6 +662,9 @@ int main(int argc, char** argv)
            << "| ... over the left signal events the right camera sees (" << share(acc.leftSignal - acc.leftVisible, acc.leftSignal)
            << " % are occluded: no matcher can match them) | " << share(acc.leftVisibleMatched, acc.leftVisible) << " % ("
            << acc.leftVisibleMatched << " / " << acc.leftVisible << ") |\n"
+           << "| ... over the left signal events motion caused (" << share(acc.leftSignal - acc.leftMotion, acc.leftSignal)
+           << " % are the flicker's) | " << share(acc.leftMotionMatched, acc.leftMotion) << " % (" << acc.leftMotionMatched
+           << " / " << acc.leftMotion << ") |\n"
            << "| left signal events more than 1 px off / rejected (ambiguous) / without a candidate | "
            << share(acc.leftWrong, acc.leftSignal) << " / " << share(acc.leftAmbiguous, acc.leftSignal) << " / "
            << share(acc.leftNoCounterpart, acc.leftSignal) << " % |\n"
@@ -663,6 +682,8 @@ int main(int argc, char** argv)
         if (filter)
             md << "| filter " << o.filter << ": signal kept / noise removed / signal share of the kept events | "
                << signalKept << " / " << noiseRemoved << " / " << keptPrecision << " % (" << noiseEvents << " noise events) |\n"
+               << "| filter " << o.filter << ": flicker removed | "
+               << (acc.flicker ? cv::format("%.2f %% of %lld flicker events", flickerRemoved, (long long)acc.flicker) : std::string("n/a (no flicker)")) << " |\n"
                << "| filter speed | " << filterMevPerS << " Mev/s |\n";
         md << "\n"
            << "![error histogram](disparity_error_histogram.png)\n\n"
@@ -692,9 +713,12 @@ int main(int argc, char** argv)
         if (!filterPicture.empty())
         {
             imwrite(o.output + "/filter_before_after.png", filterPicture);
-            md << "\n![left events of the last window: all | kept by " << o.filter << " (signal ON white, OFF grey, noise red)](filter_before_after.png)\n";
+            md << "\n![left events of the last window: all | kept by " << o.filter << " (signal ON white, OFF grey, noise red, flicker blue)](filter_before_after.png)\n";
             std::cout << "filter " << o.filter << ": signal kept " << signalKept << " %, noise removed " << noiseRemoved
-                      << " % of " << noiseEvents << ", signal share of kept " << keptPrecision << " %, "
+                      << " % of " << noiseEvents;
+            if (acc.flicker)
+                std::cout << ", flicker removed " << flickerRemoved << " % of " << acc.flicker;
+            std::cout << ", signal share of kept " << keptPrecision << " %, "
                       << filterMevPerS << " Mev/s\n";
         }
         std::cout << "density " << density << " %, within 1 px " << within1 << " %, MAE " << mae << " px, "

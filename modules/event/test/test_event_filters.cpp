@@ -172,6 +172,47 @@ TEST(Event_Filters, hot_pixel_at_1khz_is_found_masked_saved_and_loaded)
     EXPECT_EQ(0, f->getHotPixelCount());
 }
 
+TEST(Event_Filters, hot_pixels_stand_out_from_their_neighbours_busy_scene_parts_do_not)
+{
+    // One second at 1 Hz background activity, and four things firing at 500 Hz: a 5 x 5 patch (a fan's
+    // hub), a one-pixel-wide track of 12 pixels (a thin edge going back and forth), a pair of adjacent pixels
+    // and a lone pixel. Against the mean count of its 8 neighbours (about 1 event where they are quiet), a
+    // busy pixel with b busy neighbours stands 8 / b times out: the lone pixel about 500 times, the pair's
+    // and the track's ends 8 times, the track's inside 4, the patch's corners 2.7, the rest of it less.
+    const Size size(64, 48);
+    RNG rng(11);
+    std::vector<Event> ev;
+    for (int i = 0; i < size.area(); i++)
+        ev.push_back(Event(rng.uniform(0, 1000000), rng.uniform(0, size.width), rng.uniform(0, size.height), rng.uniform(0, 2)));
+    auto busy = [&](int x, int y) {
+        for (int i = 0; i < 500; i++)
+            ev.push_back(Event(i * 2000 + x + y, x, y, POLARITY_ON));
+    };
+    for (int y = 10; y < 15; y++)
+        for (int x = 10; x < 15; x++)
+            busy(x, y);
+    for (int x = 30; x < 42; x++)
+        busy(x, 30);
+    busy(50, 40);
+    busy(51, 40);
+    busy(20, 40);
+    sortByTime(ev);
+    auto hotPixels = [&](double relativeRate) {
+        // 50 Hz: well above the background activity, which at 5 Hz and a low ratio would let a few chance
+        // pixels among quiet neighbours through.
+        Ptr<HotPixelFilter> f = HotPixelFilter::create(size, 50, relativeRate);
+        f->learn(ev);
+        f->detect();
+        Mat mask;
+        f->getMask(mask);
+        std::vector<Point> hot;
+        findNonZero(mask, hot);
+        return hot;
+    };
+    EXPECT_EQ((std::vector<Point>{ Point(20, 40) }), hotPixels(10));
+    EXPECT_EQ((std::vector<Point>{ Point(30, 30), Point(41, 30), Point(20, 40), Point(50, 40), Point(51, 40) }), hotPixels(5));
+}
+
 TEST(Event_Filters, anti_flicker_removes_100hz_flicker_and_keeps_3hz_motion)
 {
     const Size size(16, 16);
@@ -207,6 +248,47 @@ TEST(Event_Filters, anti_flicker_removes_100hz_flicker_and_keeps_3hz_motion)
     // period of the band.
     std::vector<Event> after{ Event(2500000, 0, 0, POLARITY_ON), Event(2500100, 0, 0, POLARITY_ON) };
     EXPECT_EQ((std::vector<uchar>{ 255, 255 }), keepMask(*f, after));
+}
+
+TEST(Event_Filters, anti_flicker_removes_a_simulated_lamp_after_three_periods_and_keeps_a_moving_edge)
+{
+    // A lamp flickering at 100 Hz in front of an edge sweeping at 80 px/s. Its pixels' bursts start at about
+    // 0 (ON), 2.5 (OFF), 7.5, 12.5 and 17.5 ms; the fifth follows three periods in the band, so from 17.5 ms
+    // on every flicker event goes. The simulator's flags say which events are the flicker's.
+    std::vector<SimulatedPlane> scene = sweepingEdgeScene(1.0, 0.4, -0.1);
+    SimulatedPlane lamp;
+    lamp.center = Vec3d(0, -0.05, 0.8);
+    lamp.halfSize = Vec2d(0.1, 0.02);
+    lamp.texture = TEXTURE_UNIFORM;
+    lamp.intensity = 2;
+    lamp.flickerDepth = 0.6;
+    scene.push_back(lamp);
+    SimulatorSettings s = idealSmallSensor();
+    s.flickerFrequencyHz = 100;
+    Ptr<StereoEventSimulator> sim = StereoEventSimulator::create(scene, s);
+    std::vector<Event> ev;
+    Mat truth;
+    sim->generate(300000, ev, truth);
+    Ptr<AntiFlickerFilter> f = AntiFlickerFilter::create(s.resolution);
+    const std::vector<uchar> m = keepMask(*f, ev);
+    int flicker = 0, flickerKeptLate = 0, motion = 0, motionKept = 0;
+    for (size_t i = 0; i < ev.size(); i++)
+    {
+        if ((int)truth.at<float>((int)i, GT_FLAGS) & GT_FLAG_FLICKER)
+        {
+            flicker++;
+            flickerKeptLate += m[i] && ev[i].t >= 17500;
+        }
+        else
+        {
+            motion++;
+            motionKept += m[i] != 0;
+        }
+    }
+    ASSERT_GT(flicker, 10000);
+    ASSERT_GT(motion, 5000);
+    EXPECT_EQ(0, flickerKeptLate);
+    EXPECT_EQ(motion, motionKept);
 }
 
 // Cutting a stream into packets does not change what a filter keeps, on either camera.

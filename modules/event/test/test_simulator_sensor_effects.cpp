@@ -176,6 +176,87 @@ TEST(Event_SimulatorSensor, threshold_mismatch_gives_the_expected_mean_count)
     EXPECT_GT(std::abs(expected - std::floor(C / mu)), 0.3) << "the mismatch must move the mean for this test to mean anything";
 }
 
+TEST(Event_SimulatorSensor, flicker_fires_every_threshold_level_within_the_swing_at_its_frequency)
+{
+    // A steady lamp whose intensity is I (1 + d sin(2 pi f t)). Without mismatch every pixel's reference
+    // stays on the levels log I + k C, so each half period fires at the levels within the log swing
+    // [log(1 - d), log(1 + d)] but the one the last burst ended on: n - 1 events, n the levels in the swing.
+    const double d = 0.53, C = 0.2, f = 100;
+    int levels = 0;
+    for (int k = -20; k <= 20; k++)
+        levels += k * C >= std::log(1 - d) && k * C <= std::log(1 + d);
+    ASSERT_EQ(6, levels) << "levels well inside the swing: no level sits at a peak";
+    std::vector<SimulatedPlane> lamp = staticScene();
+    lamp[0].flickerDepth = d;
+    SimulatorSettings s = idealSmallSensor();
+    s.thresholdOn = s.thresholdOff = C;
+    s.flickerFrequencyHz = f;
+    Mat truth;
+    std::vector<Event> ev;
+    const PixelTimes times = simulate(lamp, s, 100000, &truth, &ev);
+    ASSERT_EQ((size_t)2 * s.resolution.area(), times.size()) << "every pixel of both cameras flickers";
+    // From the first peak at 2.5 ms to the ninth at 82.5 ms: 8 periods of 2 (n - 1) events.
+    for (const auto& kv : times)
+    {
+        const auto inPeriods = std::count_if(kv.second.begin(), kv.second.end(), [](int64 t) { return t >= 2500 && t < 82500; });
+        ASSERT_EQ(8 * 2 * (levels - 1), (int)inPeriods) << "camera " << std::get<0>(kv.first) << ", pixel ("
+                                                         << std::get<2>(kv.first) << ", " << std::get<1>(kv.first) << ")";
+    }
+    for (size_t i = 0; i < ev.size(); i++)
+    {
+        // ON events while the intensity rises, OFF while it falls; every one is the flicker's.
+        const double rising = std::cos(2 * CV_PI * f * (double)ev[i].t * 1e-6);
+        ASSERT_GT(ev[i].p == POLARITY_ON ? rising : -rising, 0.0) << "event " << i << " at " << ev[i].t << " us";
+        ASSERT_TRUE((int)truth.at<float>((int)i, GT_FLAGS) & GT_FLAG_FLICKER) << i;
+        ASSERT_FLOAT_EQ(2.f, truth.at<float>((int)i, GT_DEPTH)) << "the lamp is a real scene point, 2 m away";
+    }
+}
+
+TEST(Event_SimulatorSensor, flicker_and_motion_at_one_pixel_are_told_apart)
+{
+    // An edge of log contrast ln 9 under a lamp whose log swing w = log(1.25 / 0.75) = 0.51 is over two
+    // thresholds: every pixel fires at least one level per half period, before and after the edge. The
+    // edge's step (uniform planes: one render to the next) fires (ln 9 +- w) / C levels at once, the flicker's
+    // phase deciding the +-: those are the motion's, all ON. The flicker's alternate, so they never add up to
+    // more than the swing's levels, before and after the edge.
+    const double depth = 0.25, swing = std::log((1 + depth) / (1 - depth));
+    std::vector<SimulatedPlane> scene = sweepingEdge();
+    for (SimulatedPlane& p : scene)
+        p.flickerDepth = depth;
+    SimulatorSettings s = idealSmallSensor();
+    s.flickerFrequencyHz = 100;
+    Mat truth;
+    std::vector<Event> ev;
+    simulate(scene, s, 400000, &truth, &ev);
+    const double perPixel = std::log(9.0) / s.thresholdOn;
+    std::map<std::tuple<int, int, int>, int> motionOn, flickerNet;
+    int flickerEvents = 0;
+    for (size_t i = 0; i < ev.size(); i++)
+    {
+        const auto key = std::make_tuple((int)ev[i].camera, (int)ev[i].y, (int)ev[i].x);
+        if ((int)truth.at<float>((int)i, GT_FLAGS) & GT_FLAG_FLICKER)
+        {
+            flickerNet[key] += ev[i].p == POLARITY_ON ? 1 : -1;
+            flickerEvents++;
+        }
+        else
+        {
+            ASSERT_EQ(POLARITY_ON, (int)ev[i].p) << "the edge brightens every pixel it crosses; event " << i;
+            motionOn[key]++;
+        }
+    }
+    ASSERT_GT(motionOn.size(), 1000u);
+    // Both cameras, 80 half periods of at least one level each (the first one may fall short).
+    EXPECT_GE(flickerEvents, 2 * s.resolution.area() * 79) << "every pixel follows the flicker";
+    const int swingLevels = (int)std::ceil(swing / s.thresholdOn);
+    for (const auto& kv : motionOn)
+    {
+        ASSERT_GE(kv.second, (int)std::floor(perPixel - swing / s.thresholdOn));
+        ASSERT_LE(kv.second, (int)std::ceil(perPixel + swing / s.thresholdOn));
+        ASSERT_LE(std::abs(flickerNet[kv.first]), 2 * swingLevels) << "flicker crossings go both ways";
+    }
+}
+
 TEST(Event_SimulatorSensor, threshold_noise_makes_the_count_a_renewal_process)
 {
     // A very dark background: the edge's log contrast ln(0.9 / 0.001) = 6.8 spans 34 thresholds of 0.2. With
@@ -417,8 +498,12 @@ TEST(Event_SimulatorSensor, every_effect_on_streams_alike_in_any_chunks)
     s.rightRollRad = 0.01;
     s.thresholdSigma = 0.03;
     s.refractoryUs = 200;
-    Ptr<StereoEventSimulator> whole = StereoEventSimulator::create(sweepingEdge(), s);
-    Ptr<StereoEventSimulator> chunked = StereoEventSimulator::create(sweepingEdge(), s);
+    s.blurSigmaPx = 0.7;
+    s.flickerFrequencyHz = 120;
+    std::vector<SimulatedPlane> scene = sweepingEdge();
+    scene[0].flickerDepth = 0.3;  // the background flickers, the edge does not
+    Ptr<StereoEventSimulator> whole = StereoEventSimulator::create(scene, s);
+    Ptr<StereoEventSimulator> chunked = StereoEventSimulator::create(scene, s);
     std::vector<Event> all, part, joined;
     Mat gtAll, gtPart;
     whole->generate(200000, all, gtAll);

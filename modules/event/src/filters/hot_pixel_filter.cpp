@@ -53,21 +53,36 @@ public:
             if (learnFirst_[c] == NEVER)
                 continue;
             const std::vector<uint32_t>& k = counts_[c];
-            double total = 0;
-            int fired = 0;
-            for (uint32_t v : k)
-            {
-                total += v;
-                fired += v > 0;
-            }
             // A span of at least 1 ms: a rate needs time, and a packet of one instant has none.
             const double seconds = std::max(1e-3, timeDifference(learnLast_[c], learnFirst_[c]) * 1e-6);
-            const double least = std::max(minRate_ * seconds, relativeRate_ * total / std::max(fired, 1));
-            for (size_t i = 0; i < k.size(); i++)
-                if (k[i] > 0 && (double)k[i] >= least)
+            const double least = minRate_ * seconds;
+            const int w = size_.width, h = size_.height;
+            for (int y = 0; y < h; y++)
+                for (int x = 0; x < w; x++)
                 {
-                    masks_[c][i] = 255;
-                    hot++;
+                    const uint32_t v = k[(size_t)y * w + x];
+                    if (v == 0 || (double)v < least)
+                        continue;
+                    // The scene makes neighbours fire together; a hot pixel stands out from its own
+                    // neighbourhood. The mean is floored at one event, so that a few chance events among
+                    // silent neighbours do not make a pixel hot.
+                    double sum = 0;
+                    int neighbours = 0;
+                    for (int dy = -1; dy <= 1; dy++)
+                        for (int dx = -1; dx <= 1; dx++)
+                        {
+                            const int xx = x + dx, yy = y + dy;
+                            if ((dx == 0 && dy == 0) || xx < 0 || yy < 0 || xx >= w || yy >= h)
+                                continue;
+                            sum += k[(size_t)yy * w + xx];
+                            neighbours++;
+                        }
+                    const double neighbourMean = std::max(1.0, sum / std::max(1, neighbours));
+                    if ((double)v >= relativeRate_ * neighbourMean)
+                    {
+                        masks_[c][(size_t)y * w + x] = 255;
+                        hot++;
+                    }
                 }
         }
         return hot;
@@ -119,7 +134,7 @@ public:
     {
         if (!(ratio >= 1) || ratio > 1e9)
             CV_Error_(Error::StsBadArg, ("HotPixelFilter: relative rate %g; must be >= 1 (a hot pixel fires more "
-                                         "than the mean)", ratio));
+                                         "than its neighbours)", ratio));
         relativeRate_ = ratio;
     }
 

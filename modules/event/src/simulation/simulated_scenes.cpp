@@ -128,7 +128,7 @@ std::vector<SimulatedPlane> simulatedScene(const String& name, SimulatorSettings
         planes.push_back(c);
         s.noiseRateHz = 0.5;
     }
-    else if (name == "boxes" || name == "boxes_fast")
+    else if (name == "boxes" || name == "boxes_fast" || name == "boxes_flicker")
     {
         // Two boxes and a pole at three depths (disparity 20, 10 and 8 px) over a plain wall at 5 m (4 px):
         // few edges, of moderate contrast, with a faint pattern on the near box. The boxes move diagonally, so
@@ -142,6 +142,18 @@ std::vector<SimulatedPlane> simulatedScene(const String& name, SimulatorSettings
         planes.push_back(nearBox);
         planes.push_back(uniformPlane(Vec3d(0.9, 0.1, 2.0), Vec2d(0.25, 0.2), 0.45, Vec3d(-0.35 * k, -0.15 * k, 0)));
         planes.push_back(uniformPlane(Vec3d(-0.2, 0, 2.5), Vec2d(0.025, 1.5), 0.12, Vec3d(0.15 * k, 0, 0)));
+        if (name == "boxes_flicker")
+        {
+            // Lit by a lamp on mains power, 100 Hz: the room's surfaces flicker by 6 %, a log swing of 0.12,
+            // about half a threshold, so only the most sensitive pixels follow it; the lamp itself, high on the
+            // wall (about 40 x 6 px), swings by 60 %, several thresholds per half period.
+            for (SimulatedPlane& p : planes)
+                p.flickerDepth = 0.06;
+            SimulatedPlane lamp = uniformPlane(Vec3d(0.6, -1.7, 4.9), Vec2d(0.45, 0.07), 1.5);
+            lamp.flickerDepth = 0.6;
+            planes.push_back(lamp);
+            s.flickerFrequencyHz = 100;
+        }
         realSensor(s);
     }
     else if (name == "walking")
@@ -174,7 +186,7 @@ std::vector<SimulatedPlane> simulatedScene(const String& name, SimulatorSettings
 std::vector<String> simulatedSceneNames()
 {
     return std::vector<String>{ "plane", "two_planes", "moving_line", "faint_line", "cluttered",
-                                "boxes", "boxes_fast", "walking", "low_contrast" };
+                                "boxes", "boxes_fast", "walking", "low_contrast", "boxes_flicker" };
 }
 
 }  // namespace detail

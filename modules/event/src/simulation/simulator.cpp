@@ -83,6 +83,7 @@ bool earlierEvent(const SimulatedEvent& a, const SimulatedEvent& b)
 struct Render
 {
     std::vector<float> logI, depth, flowX, flowY;
+    std::vector<float> flickerLogI;  // with flickering planes: the flicker's share of logI (log of its factor)
 };
 
 class StereoEventSimulatorImpl CV_FINAL : public StereoEventSimulator
@@ -103,6 +104,15 @@ public:
               s.thresholdNoise >= 0 && s.blurSigmaPx >= 0 && s.blurSigmaPx <= 10))
             CV_Error(Error::StsBadArg, "StereoEventSimulator: latencies, jitter, rates and the hot-pixel share must "
                                        "be >= 0 (share <= 1), the roll below 0.5 rad, the row offset within the image, the blur at most 10 px");
+        for (const SimulatedPlane& p : planes)
+        {
+            if (!(p.flickerDepth >= 0 && p.flickerDepth < 1))
+                CV_Error_(Error::StsBadArg, ("StereoEventSimulator: a plane's flickerDepth is %g; expected [0, 1)", p.flickerDepth));
+            flickering_ = flickering_ || p.flickerDepth > 0;
+        }
+        if (flickering_ && !(s.flickerFrequencyHz > 0))
+            CV_Error_(Error::StsBadArg, ("StereoEventSimulator: flickerFrequencyHz is %g; a flickering plane needs it > 0",
+                                         s.flickerFrequencyHz));
         const int n = s.resolution.area();
         RNG latencyRng((uint64)(s.seed * 7919 + 101)), hotPixelRng((uint64)(s.seed * 7919 + 202));
         delayed_ = s.latencyUs > 0 || s.latencySigmaUs > 0 || s.jitterUs > 0;
@@ -130,6 +140,9 @@ public:
                         hotPixels_[c].push_back(std::make_pair(i, hotPixelRng.uniform(0, 2)));
             render(c, 0.0, cur_[c]);
             ref_[c] = cur_[c].logI;
+            if (flickering_)
+                for (int i = 0; i < n; i++)
+                    steadyAtCrossing_[c].push_back(cur_[c].logI[i] - cur_[c].flickerLogI[i]);
         }
     }
 
@@ -256,6 +269,7 @@ private:
         const Vec3d origin(camera == CAMERA_RIGHT ? s_.baseline : 0.0, 0, 0);
         // The right camera's pixel grid against the ideal rectified one (rightRollRad, rightRowOffset).
         const bool misrectified = camera == CAMERA_RIGHT && (s_.rightRollRad != 0 || s_.rightRowOffset != 0);
+        const double flickerWave = flickering_ ? std::sin(2 * CV_PI * s_.flickerFrequencyHz * tUs * 1e-6) : 0.0;
         const double cr = std::cos(s_.rightRollRad), sr = std::sin(s_.rightRollRad);
         std::vector<PlanePose> poses;
         for (const SimulatedPlane& p : planes_)
@@ -265,6 +279,8 @@ private:
         out.depth.resize(n);
         out.flowX.resize(n);
         out.flowY.resize(n);
+        if (flickering_)
+            out.flickerLogI.assign(n, 0.f);
         const double background = std::log(s_.backgroundIntensity);
         for (int y = 0; y < sz.height; y++)
         {
@@ -307,6 +323,11 @@ private:
                     continue;
                 }
                 out.logI[i] = (float)std::log(std::max(value, 1e-4));
+                if (flickering_ && planes_[hit].flickerDepth > 0)
+                {
+                    out.flickerLogI[i] = (float)std::log(1 + planes_[hit].flickerDepth * flickerWave);
+                    out.logI[i] += out.flickerLogI[i];
+                }
                 out.depth[i] = (float)best;
                 // Motion of the visible point, projected: u = f X / Z + cx.
                 const SimulatedPlane& p = planes_[hit];
@@ -329,9 +350,23 @@ private:
         {
             // The lens: blur the linear intensity, then back to log (the depth and motion stay the sharp ones).
             Mat logI(sz, CV_32F, out.logI.data()), linear;
+            Mat steadyLinear;
+            if (flickering_)
+            {
+                // The flicker's share after the lens: the blurred image against the blurred steady one.
+                Mat flicker(sz, CV_32F, out.flickerLogI.data());
+                exp(logI - flicker, steadyLinear);
+                GaussianBlur(steadyLinear, steadyLinear, Size(), s_.blurSigmaPx, s_.blurSigmaPx, BORDER_REPLICATE);
+            }
             exp(logI, linear);
             GaussianBlur(linear, linear, Size(), s_.blurSigmaPx, s_.blurSigmaPx, BORDER_REPLICATE);
             log(linear, logI);
+            if (flickering_)
+            {
+                Mat flicker(sz, CV_32F, out.flickerLogI.data()), steadyLogI;
+                log(steadyLinear, steadyLogI);
+                subtract(logI, steadyLogI, flicker);
+            }
         }
     }
 
@@ -345,7 +380,9 @@ private:
         // Sized on the current motion; accelerations within one step are small for the rigid scenes simulated.
         // Whole microseconds: each step then owns the integer timestamps [t0, t1), so sorting a step's events
         // by (t, camera, y, x) orders the whole stream that way (left first on equal times).
-        const double dt = std::max(1.0, std::floor(std::min(s_.maxStepUs, maxFlow > 0 ? s_.maxPixelStep / maxFlow * 1e6 : s_.maxStepUs)));
+        // Flicker: 40 renders per period keep the linear interpolation within 0.3 % of the sine's swing.
+        const double maxStep = flickering_ ? std::min(s_.maxStepUs, 1e6 / (40 * s_.flickerFrequencyHz)) : s_.maxStepUs;
+        const double dt = std::max(1.0, std::floor(std::min(maxStep, maxFlow > 0 ? s_.maxPixelStep / maxFlow * 1e6 : maxStep)));
         const double t0 = t_, t1 = t_ + dt;
         std::vector<SimulatedEvent> stepEvents;
         for (int c = 0; c < 2; c++)
@@ -381,6 +418,8 @@ private:
                 float& ref = ref_[c][i];
                 const bool up = l1 > l0;
                 const double pixelThreshold = up ? cOn_[c][i] : cOff_[c][i];
+                // Flickering scenes: the steady (flicker-free) log intensity at the render times.
+                const double s0 = flickering_ ? l0 - a.flickerLogI[i] : 0.0, s1 = flickering_ ? l1 - b.flickerLogI[i] : 0.0;
                 for (;;)
                 {
                     const double threshold = s_.thresholdNoise > 0
@@ -392,6 +431,17 @@ private:
                     ref = (float)level;
                     // The crossing time, linear between the renders (the ESIM interpolation).
                     const double frac = (level - l0) / (l1 - l0);
+                    // The flicker caused the crossing when the steady scene has moved by less than half a
+                    // threshold in the crossing's direction since the pixel's previous crossing: motion alone
+                    // would not have fired it.
+                    bool byFlicker = false;
+                    if (flickering_)
+                    {
+                        const double steady = s0 + std::min(1.0, std::max(0.0, frac)) * (s1 - s0);
+                        const double towards = up ? steady - steadyAtCrossing_[c][i] : steadyAtCrossing_[c][i] - steady;
+                        byFlicker = towards < 0.5 * threshold;
+                        steadyAtCrossing_[c][i] = (float)steady;
+                    }
                     const double te = t0 + std::min(1.0, std::max(0.0, frac)) * (t1 - t0);
                     if (te - lastEvent_[c][i] < s_.refractoryUs)
                         continue;  // inside the refractory period: the level is consumed, no event
@@ -403,7 +453,10 @@ private:
                         ts = std::max(lastStamp_[c][i], std::max((int64)t0, (int64)std::floor(te + latency_[c][i] + jitter)));
                         lastStamp_[c][i] = ts;
                     }
-                    out.push_back(std::make_pair(Event(ts, x, y, up ? POLARITY_ON : POLARITY_OFF, c), truth(c, x, y)));
+                    std::array<float, 6> g = truth(c, x, y);
+                    if (byFlicker)
+                        g[GT_FLAGS] = (float)((int)g[GT_FLAGS] | GT_FLAG_FLICKER);
+                    out.push_back(std::make_pair(Event(ts, x, y, up ? POLARITY_ON : POLARITY_OFF, c), g));
                 }
             }
         }
@@ -552,10 +605,12 @@ private:
     SimulatorSettings s_;
     RNG rng_, jitterRng_, thresholdRng_, hotRng_, leakRng_;
     std::vector<float> cOn_[2], cOff_[2], ref_[2], latency_[2];
+    std::vector<float> steadyAtCrossing_[2];  // flickering scenes: the steady log intensity at each pixel's last crossing
     std::vector<double> lastEvent_[2];
     std::vector<int64> lastStamp_[2];  // with delays: each pixel's last stamp, which its next may not precede
     std::vector<std::pair<int, int>> hotPixels_[2];  // pixel index, polarity
     bool delayed_ = false;
+    bool flickering_ = false;  // some plane flickers
     Render cur_[2], next_[2];
     double t_ = 0, delivered_ = 0;
     std::vector<SimulatedEvent> pending_;  // simulated, not yet handed out; in stream order

@@ -117,8 +117,9 @@ public:
 A hot pixel fires on its own, steadily and far more often than the scene makes its neighbours fire. The
 mask comes from one of:
 - learn() on a recording (or its first seconds), then detect(): a pixel is hot when its rate over the learnt
-  time is at least getMinRate() and at least getRelativeRate() times the mean rate of the pixels of its
-  camera that fired;
+  time is at least getMinRate() and at least getRelativeRate() times the mean rate of its 8 neighbours
+  (at least one event over the learnt time). Scene motion makes neighbours fire together, so a busy part of
+  the scene (a fan's hub, a pendulum's pivot) is not hot, however busy;
 - a learning time (setLearningTime()): filter() then learns from the first events of the stream, passing
   them all, and calls detect() once that much time has gone by;
 - setMask(), e.g. a mask saved before: save() / Algorithm::load<HotPixelFilter>() store the parameters and
@@ -156,7 +157,9 @@ public:
     CV_WRAP virtual double getMinRate() const = 0;
     /** @copybrief getMinRate @see getMinRate */
     CV_WRAP virtual void setMinRate(double hz) = 0;
-    /** @brief Least ratio of a hot pixel's rate to the mean rate of the camera's pixels that fired. */
+    /** @brief Least ratio of a hot pixel's count to the mean count of its 8 neighbours (floored at one
+    event). Two adjacent hot pixels of equal rates stand about 8 times out of each other's neighbourhood,
+    as does the end of a thin edge's track: 10, the default, finds neither; 5 finds both. */
     CV_WRAP virtual double getRelativeRate() const = 0;
     /** @copybrief getRelativeRate @see getRelativeRate */
     CV_WRAP virtual void setRelativeRate(double ratio) = 0;

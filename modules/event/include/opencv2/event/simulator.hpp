@@ -28,7 +28,12 @@ enum SimulatorGroundTruthColumn
 enum SimulatorEventFlags
 {
     GT_FLAG_NOISE = 1,    //!< background-activity noise: no scene point caused it
-    GT_FLAG_OCCLUDED = 2  //!< the scene point is hidden from the other camera: it has no stereo counterpart
+    GT_FLAG_OCCLUDED = 2, //!< the scene point is hidden from the other camera: it has no stereo counterpart
+    /** a plane's flicker made the pixel fire, not motion: since the pixel's previous threshold crossing, the
+    scene's steady (flicker-free) log intensity there has moved by less than half the threshold in the
+    event's direction. The scene
+    point is real: depth and disparity are filled in. */
+    GT_FLAG_FLICKER = 4
 };
 
 /** @brief Procedural textures of simulated planes. */
@@ -62,6 +67,10 @@ struct CV_EXPORTS SimulatedPlane
     double swingAmplitude = 0;       //!< @copydoc swingAxis
     double swingFrequency = 0;       //!< @copydoc swingAxis
     double swingPhase = 0;           //!< @copydoc swingAxis
+    /** Flicker: the plane's intensity is multiplied by 1 + flickerDepth * sin(2 pi f t), f =
+    SimulatorSettings::flickerFrequencyHz, in [0, 1). A lamp in view, or a surface lit by one (mains lighting
+    flickers at twice the mains frequency: 100 or 120 Hz). 0: steady. */
+    double flickerDepth = 0;
 };
 
 /** @brief Sensors, pair geometry and event generation of the simulator. */
@@ -108,6 +117,9 @@ struct CV_EXPORTS SimulatorSettings
     stays the ideal f B / Z. */
     double rightRowOffset = 0;
     double rightRollRad = 0;           //!< @copydoc rightRowOffset
+    /** Frequency of the planes' flicker (SimulatedPlane::flickerDepth) [Hz]. While a plane flickers, render
+    steps are at most 1/40 of its period long. */
+    double flickerFrequencyHz = 100;
 
     /** @brief Presets: SENSOR_DAVIS240 (240 x 180, f = 200 px) and SENSOR_DAVIS346 (346 x 260, f = 250 px),
     ideal sensors. */
@@ -132,7 +144,11 @@ Named scenes (create()):
 - "faint_line": the same with a faint line (log contrast at the weak sensor's threshold), so the right camera
   fires at only part of its pixels (the paper's Figure 4 case);
 - "cluttered": several textured planes at different depths, translating and rotating, with background
-  activity noise.
+  activity noise;
+- "boxes", "boxes_fast", "walking", "low_contrast": the realistic scenes (sparse edges on a plain wall, a
+  walking figure, faint texture) with a real DAVIS's noise, latency and imperfect rectification;
+- "boxes_flicker": "boxes" lit by a lamp flickering at 100 Hz, the lamp itself in view (events flagged
+  GT_FLAG_FLICKER).
 */
 class CV_EXPORTS_W StereoEventSimulator : public Algorithm
 {
