@@ -81,10 +81,37 @@ struct FakeCamera
     std::string openError;
     Ptr<WriteLog> log;
 
+    /** Paced replay: data transfers come out no faster than this many bytes per second, counted from the
+    first one (0: as fast as they are read), as from a camera streaming live. */
+    double bytesPerSecond = 0;
+
     std::mutex mutex;
     std::deque<std::pair<UsbBulkStatus, std::vector<uint8_t> > > bulk;
     bool gone = false;
     int resets = 0;
+    bool paced = false;  // the first paced transfer went out at paceStart
+    std::chrono::steady_clock::time_point paceStart;
+    double pacedBytes = 0;
+
+    /** With pacing: how long the next data transfer must still wait [us] (0: it may go now). Starts the
+    clock at the first call. */
+    double paceWaitUs(size_t transferBytes)
+    {
+        if (!(bytesPerSecond > 0))
+            return 0;
+        const auto now = std::chrono::steady_clock::now();
+        if (!paced)
+        {
+            paced = true;
+            paceStart = now;
+        }
+        const double dueUs = (pacedBytes + (double)transferBytes) / bytesPerSecond * 1e6;
+        const double elapsedUs = std::chrono::duration<double, std::micro>(now - paceStart).count();
+        if (elapsedUs < dueUs)
+            return dueUs - elapsedUs;
+        pacedBytes += (double)transferBytes;
+        return 0;
+    }
 
     void pushData(const std::vector<uint8_t>& bytes, size_t transferBytes = 4096)
     {
@@ -192,7 +219,17 @@ public:
     UsbBulkStatus readBulk(std::vector<uint8_t>& data, int timeoutMs) CV_OVERRIDE
     {
         {
-            std::lock_guard<std::mutex> lock(c_->mutex);
+            std::unique_lock<std::mutex> lock(c_->mutex);
+            if (!c_->bulk.empty() && c_->bulk.front().first == USB_BULK_DATA)
+            {
+                const double waitUs = c_->paceWaitUs(c_->bulk.front().second.size());
+                if (waitUs > 0)
+                {
+                    lock.unlock();
+                    std::this_thread::sleep_for(std::chrono::microseconds((int64)std::min(waitUs, timeoutMs * 1000.0)));
+                    return USB_BULK_TIMEOUT;
+                }
+            }
             if (!c_->bulk.empty())
             {
                 const UsbBulkStatus s = c_->bulk.front().first;
