@@ -109,4 +109,16 @@ assert kept.shape[0] == 2 and ba.getKeptCount() == 2 and ba.getProcessedCount() 
 assert "anti_flicker" in ev.getEventFilterNames()
 hot = ev.createEventFilter("hot_pixels", (16, 8))
 assert hot.getDefaultName() == "HotPixelFilter"
+# A flickering lamp in the simulator: the ground truth flags its events, and the anti-flicker filter removes
+# them from a lamp pixel's fifth burst (about 17.5 ms at 100 Hz) on, keeping the motion's.
+sim = ev.StereoEventSimulator_create("boxes_flicker")
+ok, events, truth = sim.generate(60000.0)
+assert ok and truth.shape == (events.shape[0], 6), truth.shape
+flags = truth[:, ev.GT_FLAGS].astype(np.int32)
+flicker = (flags & ev.GT_FLAG_FLICKER) != 0
+motion = (flags & (ev.GT_FLAG_FLICKER | ev.GT_FLAG_NOISE)) == 0
+assert flicker.sum() > 10000 and motion.sum() > 1000, (flicker.sum(), motion.sum())
+kept, mask = ev.AntiFlickerFilter_create(tuple(sim.getSensorSize())).filter(events)
+kept_mask = mask.ravel() != 0
+assert (~kept_mask & flicker).sum() > 0.6 * flicker.sum() and (kept_mask & motion).sum() >= 0.99 * motion.sum()
 print("python bindings: cv2.event OK")

@@ -380,7 +380,7 @@ private:
         // Sized on the current motion; accelerations within one step are small for the rigid scenes simulated.
         // Whole microseconds: each step then owns the integer timestamps [t0, t1), so sorting a step's events
         // by (t, camera, y, x) orders the whole stream that way (left first on equal times).
-        // Flicker: 40 renders per period keep the linear interpolation within 0.3 % of the sine's swing.
+        // Flicker: 40 renders per period keep the linear interpolation within 0.3 % of the sine's amplitude.
         const double maxStep = flickering_ ? std::min(s_.maxStepUs, 1e6 / (40 * s_.flickerFrequencyHz)) : s_.maxStepUs;
         const double dt = std::max(1.0, std::floor(std::min(maxStep, maxFlow > 0 ? s_.maxPixelStep / maxFlow * 1e6 : maxStep)));
         const double t0 = t_, t1 = t_ + dt;
