@@ -100,9 +100,10 @@ struct EvaluationTotals
     double absError = 0, relDepthError = 0;
     std::vector<int> errorHistogram = std::vector<int>(41, 0);  // |error| in 0.25 px bins up to 10 px
     std::vector<double> lifetimeRelErrors;
-    // --filter: what it kept of the signal (motion), of the noise and of the flicker (ground truth flags), and
-    // its own time.
-    int64 filterSignal = 0, filterSignalKept = 0, filterNoiseKept = 0, flicker = 0, filterFlickerKept = 0;
+    // Signal events a flickering plane caused (GT_FLAG_FLICKER); signal - flicker are the motion's.
+    int64 flicker = 0;
+    // --filter: what it kept of the motion's events, of the noise and of the flicker, and its own time.
+    int64 filterSignalKept = 0, filterNoiseKept = 0, filterFlickerKept = 0;
     double filterSeconds = 0;
     // Non-occluded signal events with a best estimate (no rejection): its confidence, and whether it is within 1 px.
     std::vector<std::pair<float, bool>> ranked;
@@ -492,10 +493,8 @@ int main(int argc, char** argv)
                 {
                     const int flags = (int)truth[i][GT_FLAGS];
                     const bool noise = (flags & GT_FLAG_NOISE) != 0, flicker = (flags & GT_FLAG_FLICKER) != 0;
-                    acc.filterSignal += !noise && !flicker;
                     acc.filterSignalKept += keepMask[i] && !noise && !flicker;
                     acc.filterNoiseKept += keepMask[i] && noise;
-                    acc.flicker += flicker;
                     acc.filterFlickerKept += keepMask[i] && flicker;
                 }
                 if (!window.empty())
@@ -534,6 +533,7 @@ int main(int argc, char** argv)
                 if (isNoise)
                     continue;
                 acc.signal++;
+                acc.flicker += (flags & GT_FLAG_FLICKER) != 0;
                 if (window[i].camera == CAMERA_LEFT)
                 {
                     acc.leftSignal++;
@@ -636,7 +636,7 @@ int main(int argc, char** argv)
         // The filter's figures: signal kept (recall of the motion's events), noise and flicker removed, and the
         // share of signal among the kept events (precision).
         const int64 noiseEvents = acc.noiseTrue;
-        const double signalKept = share(acc.filterSignalKept, acc.filterSignal);
+        const double signalKept = share(acc.filterSignalKept, acc.signal - acc.flicker);
         const double noiseRemoved = share(noiseEvents - acc.filterNoiseKept, noiseEvents);
         const double flickerRemoved = share(acc.flicker - acc.filterFlickerKept, acc.flicker);
         const double keptPrecision = share(acc.filterSignalKept, acc.filterSignalKept + acc.filterNoiseKept + acc.filterFlickerKept);

@@ -52,18 +52,6 @@ const Burst& davis346Burst()
     return burst;
 }
 
-// The camera's words for a burst, then its clock running on for 100 ms more (a wrap word every 32.768 ms):
-// the receiver learns that nothing older can come.
-std::vector<uint8_t> cameraBytes(const std::vector<Event>& events)
-{
-    std::vector<uint8_t> bytes = davis_words::encodeEvents(events);
-    WordStream clock;
-    for (int64 t = 0; t <= events.back().t + 100000; t += 0x8000)
-        clock.word(wrapWord(1));
-    bytes.insert(bytes.end(), clock.bytes.begin(), clock.bytes.end());
-    return bytes;
-}
-
 typedef TestBaseWithParam<int> Event_LiveBurst;
 
 PERF_TEST_P(Event_LiveBurst, davis346_stereo_5mevs_100ms_into_coupled, testing::Values(512, 32))
@@ -83,12 +71,16 @@ PERF_TEST_P(Event_LiveBurst, davis346_stereo_5mevs_100ms_into_coupled, testing::
         Ptr<FakeCamera> left = usb.add(5, 346, 260, false, false);  // slave
         Ptr<FakeCamera> right = usb.add(5, 346, 260, false, true);  // master
         right->slave = left.get();
-        left->afterReset = cameraBytes(burst.camera[CAMERA_LEFT]);
-        right->afterReset = cameraBytes(burst.camera[CAMERA_RIGHT]);
-        // Each camera sends its burst's bytes in 100 ms (and its clock words a little later).
+        // Each camera sends its burst's words in 100 ms, then its clock running on for 100 ms more (a little
+        // later, at the same rate).
         const double burstSeconds = 0.1;
-        left->bytesPerSecond = (double)davis_words::encodeEvents(burst.camera[CAMERA_LEFT]).size() / burstSeconds;
-        right->bytesPerSecond = (double)davis_words::encodeEvents(burst.camera[CAMERA_RIGHT]).size() / burstSeconds;
+        for (int c = 0; c < 2; c++)
+        {
+            FakeCamera& camera = c == CAMERA_LEFT ? *left : *right;
+            camera.afterReset = davis_words::encodeEvents(burst.camera[c]);
+            camera.bytesPerSecond = (double)camera.afterReset.size() / burstSeconds;
+            davis_words::appendClockWords(camera.afterReset, burst.camera[c].back().t + 100000);
+        }
 
         EventCapture cap;
         cap.set(EVENT_CAP_PROP_QUEUE_CAPACITY, queueCapacity);

@@ -59,6 +59,16 @@ inline std::vector<uint8_t> encodeEvents(const std::vector<Event>& events, int64
     return s.bytes;
 }
 
+/** Appends the clock words a running camera keeps sending: a wrap word every 32.768 ms from the reset up to
+@p untilUs, so that the receiver learns that nothing older can come. */
+inline void appendClockWords(std::vector<uint8_t>& bytes, int64 untilUs)
+{
+    WordStream clock;
+    for (int64 t = 0; t <= untilUs; t += 0x8000)
+        clock.word(wrapWord(1));
+    bytes.insert(bytes.end(), clock.bytes.begin(), clock.bytes.end());
+}
+
 }}  // namespace
 
 #endif

@@ -26,10 +26,7 @@ one wrap past the last event: the receiver learns that nothing older can come. *
 std::vector<uint8_t> encodeWithClock(const std::vector<Event>& events)
 {
     std::vector<uint8_t> bytes = encodeEvents(events);
-    WordStream clock;
-    for (int64 t = 0; t <= events.back().t + 0x8000; t += 0x8000)
-        clock.word(wrapWord(1));
-    bytes.insert(bytes.end(), clock.bytes.begin(), clock.bytes.end());
+    appendClockWords(bytes, events.back().t + 0x8000);
     return bytes;
 }
 

@@ -430,19 +430,19 @@ private:
                         break;
                     ref = (float)level;
                     // The crossing time, linear between the renders (the ESIM interpolation).
-                    const double frac = (level - l0) / (l1 - l0);
+                    const double frac = std::min(1.0, std::max(0.0, (level - l0) / (l1 - l0)));
                     // The flicker caused the crossing when the steady scene has moved by less than half a
                     // threshold in the crossing's direction since the pixel's previous crossing: motion alone
                     // would not have fired it.
                     bool byFlicker = false;
                     if (flickering_)
                     {
-                        const double steady = s0 + std::min(1.0, std::max(0.0, frac)) * (s1 - s0);
+                        const double steady = s0 + frac * (s1 - s0);
                         const double towards = up ? steady - steadyAtCrossing_[c][i] : steadyAtCrossing_[c][i] - steady;
                         byFlicker = towards < 0.5 * threshold;
                         steadyAtCrossing_[c][i] = (float)steady;
                     }
-                    const double te = t0 + std::min(1.0, std::max(0.0, frac)) * (t1 - t0);
+                    const double te = t0 + frac * (t1 - t0);
                     if (te - lastEvent_[c][i] < s_.refractoryUs)
                         continue;  // inside the refractory period: the level is consumed, no event
                     lastEvent_[c][i] = te;

@@ -31,8 +31,7 @@ enum SimulatorEventFlags
     GT_FLAG_OCCLUDED = 2, //!< the scene point is hidden from the other camera: it has no stereo counterpart
     /** a plane's flicker made the pixel fire, not motion: since the pixel's previous threshold crossing, the
     scene's steady (flicker-free) log intensity there has moved by less than half the threshold in the
-    event's direction. The scene
-    point is real: depth and disparity are filled in. */
+    event's direction. The scene point is real: depth and disparity are filled in. */
     GT_FLAG_FLICKER = 4
 };
 
