@@ -520,7 +520,8 @@ double StereoEventMatcherImpl::getLifetimeSeconds() const
 
 void StereoEventMatcherImpl::sizeScratch(MatchScratch& s) const
 {
-    s.neighbours.resize((size_t)costWindow_ * costWindow_);
+    s.matchedRows.resize((size_t)costWindow_);
+    s.matchedKeys.resize((size_t)costWindow_ * costWindow_);
     const size_t range = (size_t)(maxDisparity_ - minDisparity_ + 1);
     s.candidates.resize(range);
     s.offsets.resize(range);

@@ -30,17 +30,11 @@ struct MatchResult
     int flags = 0;           // STEREO_NO_COUNTERPART when there was no candidate
 };
 
-/** An active event of the matched window: its lifetime and its index in the map's per-pixel arrays. */
-struct Neighbour
-{
-    float lifetime;
-    int index;
-};
-
 /** The working memory of matching one event (one per thread): the candidates as disparity index (disparity -
 min) in increasing order, the byte offset of each one's descriptor in the other sensor from the event's
 column, and their costs (the first `count` of each, sized for the whole disparity range); the matched
-window's lifetimes; the left-right check's disparities; the lifetime estimators' scratch, per camera.
+window's activity per row and its active events (matchedLifetime); the left-right check's disparities; the lifetime
+estimators' scratch, per camera.
 Near the other image's border (scoreSeenColumns): the candidates' scores, the event's own mass per column of
 the window and the mass of its first k unseen columns. */
 struct MatchScratch
@@ -53,7 +47,8 @@ struct MatchScratch
     std::vector<unsigned> seenScore;
     std::vector<unsigned> columnMass;
     std::vector<unsigned> unseenMass;
-    std::vector<Neighbour> neighbours;
+    std::vector<unsigned> matchedRows;
+    std::vector<uint64> matchedKeys;
     std::vector<float> disparities;
     LifetimeScratch lifetimes[2];
 };

@@ -8,6 +8,8 @@
 #include "precomp.hpp"
 #include "stereo/stereo_event_matcher_impl.hpp"
 
+#include <opencv2/core/hal/intrin.hpp>
+
 namespace cv {
 namespace event {
 namespace detail {
@@ -311,33 +313,54 @@ size_t StereoEventMatcherImpl::activeEstimateMedian(int c, Point centre, int rad
 
 // Median lifetime (and the flow of that event) of the active events of polarity p in the cost window
 // around (x, y) of sensor c. False when none has a lifetime.
+// Matched events copy their lifetime, so most windows hold equal lifetimes: the median is taken in the order
+// (lifetime, position in the map), which fixes whose flow is returned whatever the selection algorithm.
+// Each active event is one 64-bit key (a positive float's bits order as the float does), so that the
+// selection compares integers.
 bool StereoEventMatcherImpl::matchedLifetime(int c, int x, int y, int p, MatchScratch& s, float& lifetime, Vec2f& flow) const
 {
     const ZouDescriptorMap& map = maps_[c];
     const int h = costWindow_ / 2;
-    // Every pixel is written, and the end advances past those with a lifetime: no branch on the (random)
-    // activity pattern. The scratch holds a whole window (sizeScratch()).
-    Neighbour* const first = s.neighbours.data();
-    Neighbour* end = first;
     const int x0 = std::max(0, x - h), x1 = std::min(size_.width - 1, x + h);
+    const int y0 = std::max(0, y - h), y1 = std::min(size_.height - 1, y + h);
+    const int width = x1 - x0 + 1;  // <= 31: a row's activity fits one 32-bit mask
     const float* const lifetimes = map.lifetimes();
-    for (int yy = std::max(0, y - h); yy <= std::min(size_.height - 1, y + h); yy++)
+    // First the window's activity, row by row, with no branch: the rows' loads are independent, so that their
+    // cache misses (the other sensor's lifetimes are seldom cached) overlap instead of queuing behind the
+    // visits of the active pixels.
+    unsigned* const rowActive = s.matchedRows.data();  // sized for a whole window (sizeScratch())
+    const v_float32x4 zero = v_setzero_f32();
+    for (int yy = y0; yy <= y1; yy++)
     {
-        const int i1 = map.lifetimeIndex(x1, yy, p);
-        for (int i = map.lifetimeIndex(x0, yy, p); i <= i1; i++)
+        const float* row = lifetimes + map.lifetimeIndex(x0, yy, p);
+        unsigned active = 0;
+        int i = 0;
+        for (; i + v_float32x4::nlanes <= width; i += v_float32x4::nlanes)
+            active |= (unsigned)v_signmask(v_load(row + i) > zero) << i;
+        for (; i < width; i++)
+            active |= (unsigned)(row[i] > 0) << i;
+        rowActive[yy - y0] = active;
+    }
+    uint64* const keys = s.matchedKeys.data();
+    int n = 0;
+    for (int yy = y0; yy <= y1; yy++)
+    {
+        const int first = map.lifetimeIndex(x0, yy, p);
+        for (unsigned active = rowActive[yy - y0]; active != 0; active &= active - 1)
         {
-            const float v = lifetimes[i];
-            *end = Neighbour{ v, i };
-            end += v > 0;
+            const int i = first + (int)trailingZeros32(active);
+            uint32_t bits;
+            std::memcpy(&bits, &lifetimes[i], sizeof(bits));
+            keys[n++] = ((uint64)bits << 32) | (uint32_t)i;
         }
     }
-    if (end == first)
+    if (n == 0)
         return false;
-    const std::ptrdiff_t mid = (end - first) / 2;
-    std::nth_element(first, first + mid, end, [](const Neighbour& a, const Neighbour& b) { return a.lifetime < b.lifetime; });
-    const Neighbour& q = first[mid];
-    lifetime = q.lifetime;
-    flow = map.flowAt(q.index);
+    std::nth_element(keys, keys + n / 2, keys + n);
+    const uint64 median = keys[n / 2];
+    const uint32_t bits = (uint32_t)(median >> 32);
+    std::memcpy(&lifetime, &bits, sizeof(lifetime));
+    flow = map.flowAt((int)(uint32_t)median);
     return true;
 }
 
