@@ -17,6 +17,7 @@ struct SceneRun
 {
     std::vector<float> disparity, confidence, truth;
     std::vector<int> flags, truthFlags, camera;
+    std::vector<uchar> horizontalEdge;  // the truth's normal flow is more vertical than horizontal
 };
 
 inline SceneRun runScene(const std::string& scene, double ms, const std::function<void(StereoEventMatcher&)>& configure)
@@ -39,6 +40,7 @@ inline SceneRun runScene(const std::string& scene, double ms, const std::functio
             run.truth.push_back(gt.at<float>(i, GT_DISPARITY));
             run.truthFlags.push_back((int)gt.at<float>(i, GT_FLAGS));
             run.camera.push_back(ev[(size_t)i].camera);
+            run.horizontalEdge.push_back(std::abs(gt.at<float>(i, GT_FLOW_Y)) > std::abs(gt.at<float>(i, GT_FLOW_X)));
         }
     }
     return run;
@@ -61,12 +63,13 @@ inline std::vector<StereoEventEstimate> estimatesOf(const Mat& disparity, const 
     return estimates;
 }
 
-// Left signal events within 1 px of the truth, over all left signal events [%].
-inline double matchingRate(const SceneRun& r)
+// Left signal events within 1 px of the truth, over all left signal events [%]; onlyHorizontalEdges: over
+// those on horizontal edges.
+inline double matchingRate(const SceneRun& r, bool onlyHorizontalEdges = false)
 {
     int64 all = 0, matched = 0;
     for (size_t i = 0; i < r.disparity.size(); i++)
-        if (r.camera[i] == CAMERA_LEFT && !(r.truthFlags[i] & GT_FLAG_NOISE))
+        if (r.camera[i] == CAMERA_LEFT && !(r.truthFlags[i] & GT_FLAG_NOISE) && (!onlyHorizontalEdges || r.horizontalEdge[i]))
         {
             all++;
             matched += r.disparity[i] > 0 && std::abs(r.disparity[i] - r.truth[i]) <= 1;

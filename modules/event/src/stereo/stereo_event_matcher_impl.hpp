@@ -238,19 +238,24 @@ private:
 
     // The temporal prior's decision for an event without a unique winner at the largest window (best cost
     // bestCost, the candidates' scores in score): false when it has none; otherwise the chosen candidate in m.
-    enum { PRIOR_RADIUS = 5, PRIOR_SUPPORT = 3 };
+    // Its neighbourhood: PRIOR_RADIUS rows above and below, and PRIOR_RADIUS columns to each side, or
+    // PRIOR_ROW_REACH on a horizontal edge (priorColumnReach).
+    enum { PRIOR_RADIUS = 5, PRIOR_ROW_REACH = 30, PRIOR_SUPPORT = 3 };
     bool decideByPrior(int c, Point r, int64 t, const unsigned* score, unsigned bestCost, MatchScratch& s,
                        MatchResult& m) const;
+    // How far along the row the temporal prior looks for the event at r of sensor c.
+    int priorColumnReach(int c, Point r) const;
 
     // Left-right check against the other sensor's own estimates: the active events around the counterpart
     // were matched the other way (toward this sensor); when they have disparities, their median must agree
     // within one pixel. Without any there is nothing to contradict the match.
     bool consistent(int c, int x, int y, double d, int64 t, MatchScratch& s) const;
 
-    // The disparities of sensor c's estimates still active at time t within `radius` pixels of `centre` (into
-    // s.disparities), their count and, when there are any, their median: what the left-right check and the
-    // temporal prior read.
-    size_t activeEstimateMedian(int c, Point centre, int radius, int64 t, MatchScratch& s, float& median) const;
+    // The disparities of sensor c's estimates still active at time t within `radius` rows and `columns`
+    // columns of `centre` (into s.disparities), their count and, when there are any, their median: what the
+    // left-right check and the temporal prior read.
+    size_t activeEstimateMedian(int c, Point centre, int radius, int columns, int64 t, MatchScratch& s,
+                                float& median) const;
 
     // Median lifetime (and the flow of that event) of the active events of polarity p in the cost window
     // around (x, y) of sensor c. False when none has a lifetime.

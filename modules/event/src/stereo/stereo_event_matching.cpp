@@ -257,7 +257,7 @@ bool StereoEventMatcherImpl::decideByPrior(int c, Point r, int64 t, const unsign
                                            MatchResult& m) const
 {
     float prior;
-    const size_t support = activeEstimateMedian(c, r, PRIOR_RADIUS, t, s, prior);
+    const size_t support = activeEstimateMedian(c, r, PRIOR_RADIUS, priorColumnReach(c, r), t, s, prior);
     if (support < PRIOR_SUPPORT)
         return false;
     const int* const candidates = s.candidates.data();
@@ -279,23 +279,47 @@ bool StereoEventMatcherImpl::decideByPrior(int c, Point r, int64 t, const unsign
     return true;
 }
 
+// Along a horizontal edge every candidate on the other sensor's copy of the edge costs about the same: only
+// the edge's ends tell them apart, and an event far from both stays ambiguous, as do its neighbours, so that
+// the prior's 11 x 11 neighbourhood holds no estimates or only the ends' wrong ones. On such an edge the prior
+// reads along the row as far as the largest cost window spans (its corners and the vertical edges at its
+// ends). The edge's direction comes from the normal flow of the active events around the event (both
+// polarities): mostly vertical flow is a horizontal edge. Its rows stay PRIOR_RADIUS, so that the row bands'
+// reach is unchanged.
+int StereoEventMatcherImpl::priorColumnReach(int c, Point r) const
+{
+    const ZouDescriptorMap& map = maps_[c];
+    float across = 0, along = 0;  // |flow x|, |flow y| summed
+    for (int p = 0; p < 2; p++)
+        for (int y = std::max(0, r.y - 1); y <= std::min(size_.height - 1, r.y + 1); y++)
+            for (int x = std::max(0, r.x - 1); x <= std::min(size_.width - 1, r.x + 1); x++)
+                if (map.isActive(x, y, p))
+                {
+                    const Vec2f f = map.flow(x, y, p);
+                    across += std::abs(f[0]);
+                    along += std::abs(f[1]);
+                }
+    return along > across ? (int)PRIOR_ROW_REACH : (int)PRIOR_RADIUS;
+}
+
 // Left-right check against the other sensor's own estimates: the active events around the counterpart
 // were matched the other way (toward this sensor); when they have disparities, their median must agree
 // within one pixel. Without any there is nothing to contradict the match.
 bool StereoEventMatcherImpl::consistent(int c, int x, int y, double d, int64 t, MatchScratch& s) const
 {
     float median;
-    return activeEstimateMedian(c, Point(x, y), 1, t, s, median) == 0 || std::abs(median - d) <= 1.0;
+    return activeEstimateMedian(c, Point(x, y), 1, 1, t, s, median) == 0 || std::abs(median - d) <= 1.0;
 }
 
-// The disparities of sensor c's estimates still active at time t within `radius` pixels of `centre` (into
-// s.disparities, in no particular order), their count and, when there are any, their median.
-size_t StereoEventMatcherImpl::activeEstimateMedian(int c, Point centre, int radius, int64 t, MatchScratch& s, float& median) const
+// The disparities of sensor c's estimates still active at time t within `radius` rows and `columns` columns of
+// `centre` (into s.disparities, in no particular order), their count and, when there are any, their median.
+size_t StereoEventMatcherImpl::activeEstimateMedian(int c, Point centre, int radius, int columns, int64 t, MatchScratch& s,
+                                                    float& median) const
 {
     const std::vector<PixelEstimate>& last = lastEstimate_[c];
     std::vector<float>& disparities = s.disparities;
     disparities.clear();
-    const int x0 = std::max(0, centre.x - radius), x1 = std::min(size_.width - 1, centre.x + radius);
+    const int x0 = std::max(0, centre.x - columns), x1 = std::min(size_.width - 1, centre.x + columns);
     for (int y = std::max(0, centre.y - radius); y <= std::min(size_.height - 1, centre.y + radius); y++)
     {
         const PixelEstimate* row = &last[(size_t)y * size_.width];
