@@ -282,8 +282,8 @@ bool StereoEventMatcherImpl::decideByPrior(int c, Point r, int64 t, const unsign
 // Along a horizontal edge every candidate on the other sensor's copy of the edge costs about the same: only
 // the edge's ends tell them apart, and an event far from both stays ambiguous, as do its neighbours, so that
 // the prior's 11 x 11 neighbourhood holds no estimates or only the ends' wrong ones. On such an edge the prior
-// reads along the row as far as the largest cost window spans (its corners and the vertical edges at its
-// ends). The edge's direction comes from the normal flow of the active events around the event (both
+// reads 30 px to each side along the row, the width of the largest cost window at its default, to reach the
+// edge's corners and the vertical edges at its ends. The edge's direction comes from the normal flow of the active events around the event (both
 // polarities): mostly vertical flow is a horizontal edge. Its rows stay PRIOR_RADIUS, so that the row bands'
 // reach is unchanged.
 int StereoEventMatcherImpl::priorColumnReach(int c, Point r) const

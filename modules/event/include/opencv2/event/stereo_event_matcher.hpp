@@ -93,8 +93,10 @@ setMinConfidence(0) keeps every event's best estimate.
 moment ago, nearby, is most often what the next one should be matched to. When the aggregation ends
 without a unique winner (repeated or row-parallel structure), the median disparity of this sensor's still
 active estimates within 5 pixels (at least 3 of them) is the prior: the cheapest candidate within a pixel of
-it wins when its cost is within getPriorTolerance() % of the best's. Its confidence is then the share of
-those estimates within a pixel of the prior (0 when the left-right check contradicts it).
+it wins when its cost is within getPriorTolerance() % of the best's. On a horizontal edge (the active events
+around the event move more vertically than horizontally) the estimates are taken 30 pixels to each side
+along the row, 5 up and down: there only the edge's ends tell the candidates apart. Its confidence is then
+the share of those estimates within a pixel of the prior (0 when the left-right check contradicts it).
 
 **Modes** (StereoMatchMode), all with the same outputs:
 - COUPLED: the event is matched first; on a match its lifetime is the median lifetime of the active events
