@@ -69,7 +69,8 @@ inline double matchingRate(const SceneRun& r, bool onlyHorizontalEdges = false)
 {
     int64 all = 0, matched = 0;
     for (size_t i = 0; i < r.disparity.size(); i++)
-        if (r.camera[i] == CAMERA_LEFT && !(r.truthFlags[i] & GT_FLAG_NOISE) && (!onlyHorizontalEdges || r.horizontalEdge[i]))
+        if (r.camera[i] == CAMERA_LEFT && !(r.truthFlags[i] & GT_FLAG_NOISE)
+            && (!onlyHorizontalEdges || r.horizontalEdge[i]))
         {
             all++;
             matched += r.disparity[i] > 0 && std::abs(r.disparity[i] - r.truth[i]) <= 1;

@@ -283,9 +283,9 @@ bool StereoEventMatcherImpl::decideByPrior(int c, Point r, int64 t, const unsign
 // the edge's ends tell them apart, and an event far from both stays ambiguous, as do its neighbours, so that
 // the prior's 11 x 11 neighbourhood holds no estimates or only the ends' wrong ones. On such an edge the prior
 // reads 30 px to each side along the row, the width of the largest cost window at its default, to reach the
-// edge's corners and the vertical edges at its ends. The edge's direction comes from the normal flow of the active events around the event (both
-// polarities): mostly vertical flow is a horizontal edge. Its rows stay PRIOR_RADIUS, so that the row bands'
-// reach is unchanged.
+// edge's corners and the vertical edges at its ends. The edge's direction comes from the normal flow of the
+// active events around the event (both polarities): mostly vertical flow is a horizontal edge. Its rows stay
+// PRIOR_RADIUS, so that the row bands' reach is unchanged.
 int StereoEventMatcherImpl::priorColumnReach(int c, Point r) const
 {
     const ZouDescriptorMap& map = maps_[c];
@@ -313,8 +313,8 @@ bool StereoEventMatcherImpl::consistent(int c, int x, int y, double d, int64 t, 
 
 // The disparities of sensor c's estimates still active at time t within `radius` rows and `columns` columns of
 // `centre` (into s.disparities, in no particular order), their count and, when there are any, their median.
-size_t StereoEventMatcherImpl::activeEstimateMedian(int c, Point centre, int radius, int columns, int64 t, MatchScratch& s,
-                                                    float& median) const
+size_t StereoEventMatcherImpl::activeEstimateMedian(int c, Point centre, int radius, int columns, int64 t,
+                                                    MatchScratch& s, float& median) const
 {
     const std::vector<PixelEstimate>& last = lastEstimate_[c];
     std::vector<float>& disparities = s.disparities;
