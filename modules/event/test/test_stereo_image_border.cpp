@@ -12,7 +12,8 @@ namespace opencv_test { namespace {
 // sensor also sees an OFF patch at columns 0-8, which lies past the right sensor's border at every candidate
 // disparity (13-19: the columns where the right edge's vectors reach). The cost window (31) reaches the patch.
 // `mirrored` swaps the sensors and mirrors the columns (the edge at 60 in the left sensor, 44 in the right one,
-// the patch in the right one at columns 55-63). Returns the estimates of the first sensor's edge events.
+// the patch in the right one at columns 55-63). Returns the estimates of the first sensor's events: the edge's
+// 21, then the patch's.
 std::vector<StereoEventEstimate> edgeNextToTheBorder(bool oneSided, bool mirrored)
 {
     const int64 t = 1000;
@@ -36,7 +37,7 @@ std::vector<StereoEventEstimate> edgeNextToTheBorder(bool oneSided, bool mirrore
     m->setCostWindow(31);
     Mat d, flags, confidence;
     m->process(ev, d, noArray(), flags, noArray(), noArray(), confidence);
-    return estimatesOf(d, flags, confidence, 0, 21);
+    return estimatesOf(d, flags, confidence, 0, oneSided ? 21 + 21 * 9 : 21);
 }
 
 // On every column both sensors see, the edge's window at disparity 16 equals the other sensor's: the cost there
@@ -48,7 +49,7 @@ TEST(StereoEventMatcher_ImageBorder, what_only_one_sensor_sees_past_the_other_bo
     {
         const std::vector<StereoEventEstimate> withPatch = edgeNextToTheBorder(true, mirrored);
         const std::vector<StereoEventEstimate> without = edgeNextToTheBorder(false, mirrored);
-        for (size_t i = 0; i < withPatch.size(); i++)
+        for (size_t i = 0; i < without.size(); i++)
         {
             const StereoEventEstimate& e = withPatch[i];
             SCOPED_TRACE(cv::format("%s sensor, row %d", mirrored ? "right" : "left", 10 + (int)i));
@@ -60,6 +61,49 @@ TEST(StereoEventMatcher_ImageBorder, what_only_one_sensor_sees_past_the_other_bo
             EXPECT_EQ(e.flags, without[i].flags);
         }
     }
+}
+
+// The patch lies past the other sensor's border at the disparity of the edge beside it on the same rows: it has
+// no counterpart, and it takes the edge's estimate, 16 px, each of its events from the edge's and the patch's
+// estimates decided before it, all of which agree (confidence 1). Both cameras.
+TEST(StereoEventMatcher_ImageBorder, what_only_one_sensor_sees_takes_its_neighbours_disparity)
+{
+    for (bool mirrored : { false, true })
+    {
+        const std::vector<StereoEventEstimate> all = edgeNextToTheBorder(true, mirrored);
+        for (size_t i = 21; i < all.size(); i++)
+        {
+            const StereoEventEstimate& e = all[i];
+            SCOPED_TRACE(cv::format("%s sensor, patch event %d", mirrored ? "right" : "left", (int)i - 21));
+            EXPECT_EQ(e.flags & (STEREO_HAS_DISPARITY | STEREO_BEYOND_VIEW), STEREO_HAS_DISPARITY | STEREO_BEYOND_VIEW);
+            EXPECT_NEAR(e.disparity, 16.0, 0.5);
+            EXPECT_EQ(e.confidence, 1.f);
+        }
+    }
+}
+
+// boxes: the near box (20 px) fills the left image's first 20 columns, which the right camera does not see
+// (11 % of the left signal events, all flagged occluded in the ground truth). Matched, they find only other
+// scene points; their neighbours' estimates, reaching in from the part both cameras see, give them the box's
+// disparity. Measured over 600 ms: 86.9 % within 1 px of the truth, 0.5 % further off (matched instead:
+// 0.3 % within 1 px, 8.5 % further off).
+TEST(StereoEventMatcher_ImageBorder, the_near_object_past_the_other_view_takes_its_disparity)
+{
+    const SceneRun run = runScene("boxes", 600, [](StereoEventMatcher&) {});
+    int64 unseen = 0, within = 0, wrong = 0;
+    for (size_t i = 0; i < run.disparity.size(); i++)
+        if (run.camera[i] == CAMERA_LEFT && run.truthFlags[i] == GT_FLAG_OCCLUDED)
+        {
+            unseen++;
+            if (run.disparity[i] >= 0)
+                (std::abs(run.disparity[i] - run.truth[i]) <= 1 ? within : wrong)++;
+        }
+    const double withinShare = 100.0 * (double)within / (double)unseen, wrongShare = 100.0 * (double)wrong / (double)unseen;
+    std::cout << "boxes, left events the right camera does not see: " << unseen << ", " << withinShare
+              << " % within 1 px, " << wrongShare << " % further off" << std::endl;
+    ASSERT_GT(unseen, 1000);
+    EXPECT_GT(withinShare, 80);
+    EXPECT_LT(wrongShare, 3);
 }
 
 }}  // namespace

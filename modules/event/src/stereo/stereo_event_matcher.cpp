@@ -153,7 +153,11 @@ void StereoEventMatcherImpl::processAdmitted(const Event& e, Point r, int64 cold
     }
     // The event takes part in its own descriptor while it is matched; its final activity follows below.
     activateUndecided(c, r, p);
-    const MatchResult m = match(c, r, p, e.t, s);
+    // Where the neighbours put the event's counterpart past the other sensor's border, there is nothing to
+    // match: their estimates decide (no counterpart, so no matched window for the lifetime either).
+    MatchResult m;
+    if (!estimateBeyondView(c, r, e.t, s, m))
+        m = match(c, r, p, e.t, s);
     est.flags |= m.flags;
     est.confidence = m.confidence;
     if (m.disparity >= 0)
@@ -166,7 +170,7 @@ void StereoEventMatcherImpl::processAdmitted(const Event& e, Point r, int64 cold
     if (mode_ == STEREO_COUPLED)
     {
         const LifetimeTimer timer(timeLifetimes_, s.lifetimeTicks);
-        if (est.disparity >= 0 && matchedLifetime(1 - c, m.counterpartX, r.y, p, s, est.lifetime, est.flow))
+        if (est.disparity >= 0 && m.counterpartX >= 0 && matchedLifetime(1 - c, m.counterpartX, r.y, p, s, est.lifetime, est.flow))
         {
             insertEventInRows(estimator, re, est.lifetime, est.flow, s.lifetimes[c]);
             status = LIFETIME_MATCHED;

@@ -25,9 +25,9 @@ whatever its confidence; the caller decides whether to keep it. */
 struct MatchResult
 {
     float disparity = -1.f;  // -1: no candidate
-    int counterpartX = -1;   // the matched pixel of the other sensor (integer disparity)
+    int counterpartX = -1;   // the matched pixel of the other sensor (integer disparity); -1: not matched
     float confidence = 0.f;  // StereoEventEstimate::confidence
-    int flags = 0;           // STEREO_NO_COUNTERPART when there was no candidate
+    int flags = 0;           // STEREO_NO_COUNTERPART when there was no candidate; STEREO_BEYOND_VIEW
 };
 
 /** The working memory of matching one event (one per thread): the candidates as disparity index (disparity -
@@ -245,6 +245,9 @@ private:
                        MatchResult& m) const;
     // How far along the row the temporal prior looks for the event at r of sensor c.
     int priorColumnReach(int c, Point r) const;
+    // The estimate of an event of sensor c at r whose neighbours' estimates (PRIOR_RADIUS rows, PRIOR_ROW_REACH
+    // columns) put its counterpart past the other image's border: false when they do not.
+    bool estimateBeyondView(int c, Point r, int64 t, MatchScratch& s, MatchResult& m) const;
 
     // Left-right check against the other sensor's own estimates: the active events around the counterpart
     // were matched the other way (toward this sensor); when they have disparities, their median must agree

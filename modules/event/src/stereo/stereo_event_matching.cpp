@@ -302,6 +302,30 @@ int StereoEventMatcherImpl::priorColumnReach(int c, Point r) const
     return along > across ? (int)PRIOR_ROW_REACH : (int)PRIOR_RADIUS;
 }
 
+// A near object's first columns in the left image (its last ones in the right image) lie past the other
+// camera's view: no counterpart exists, and a candidate found there is another scene point. The estimates
+// around the event tell where it lies: when their median puts the counterpart past the border, it is the
+// event's disparity. It reads as far along the row as the prior on a horizontal edge, to reach the part of
+// the object both cameras see; its estimate counts for the next events nearer the border.
+bool StereoEventMatcherImpl::estimateBeyondView(int c, Point r, int64 t, MatchScratch& s, MatchResult& m) const
+{
+    // The estimates run up to maxDisparity_ + 0.5 (sub-pixel): further from the border, every one lies inside.
+    const int fromBorder = c == CAMERA_LEFT ? r.x : size_.width - 1 - r.x;
+    if (fromBorder > maxDisparity_)
+        return false;
+    float prior;
+    const size_t support = activeEstimateMedian(c, r, PRIOR_RADIUS, PRIOR_ROW_REACH, t, s, prior);
+    if (support < PRIOR_SUPPORT || cvRound(prior) <= fromBorder)
+        return false;
+    int agree = 0;
+    for (float v : s.disparities)
+        agree += std::abs(v - prior) <= 1.f;
+    m.disparity = prior;
+    m.confidence = (float)agree / (float)support;
+    m.flags = STEREO_BEYOND_VIEW;
+    return true;
+}
+
 // Left-right check against the other sensor's own estimates: the active events around the counterpart
 // were matched the other way (toward this sensor); when they have disparities, their median must agree
 // within one pixel. Without any there is nothing to contradict the match.

@@ -33,7 +33,11 @@ enum StereoEventFlags
     STEREO_NOISE = 16,              //!< no local plane and no match: classified as noise
     STEREO_AMBIGUOUS = 32,          //!< candidates existed, but the best one's confidence is below getMinConfidence()
     STEREO_NO_COUNTERPART = 64,     //!< the other sensor had no active structure along the row (yet)
-    STEREO_OUTSIDE = 128            //!< the rectified position lies outside the image: not processed
+    STEREO_OUTSIDE = 128,           //!< the rectified position lies outside the image: not processed
+    /** the estimates around the event put its counterpart past the other sensor's border, where the other
+    camera does not see it (e.g. a near object in the left image's first columns): the disparity is their
+    median, not a match (see the class description, Past the other camera's view) */
+    STEREO_BEYOND_VIEW = 256
 };
 
 /** @brief Everything StereoEventMatcher estimates for one event. */
@@ -97,6 +101,15 @@ it wins when its cost is within getPriorTolerance() % of the best's. On a horizo
 around the event move more vertically than horizontally) the estimates are taken 30 pixels to each side
 along the row, 5 up and down: there only the edge's ends tell the candidates apart. Its confidence is then
 the share of those estimates within a pixel of the prior (0 when the left-right check contradicts it).
+
+**Past the other camera's view.** The left camera sees the first max-disparity columns of a near object
+that the right camera does not (the right camera likewise its last ones): such an event has no counterpart
+to match, and any candidate it finds is another scene point. Where the median disparity of this sensor's
+still active estimates 5 rows up and down and 30 columns to each side (at least 3 of them) puts the
+counterpart past the other image's border, that median is the event's disparity, flagged
+STEREO_BEYOND_VIEW, with the share of those estimates within a pixel of it as its confidence. The event is
+not matched, and in COUPLED its lifetime comes from its own plane fit. Its estimate counts for its
+neighbours in turn, so that an object's disparity reaches the image's edge from the part both cameras see.
 
 **Modes** (StereoMatchMode), all with the same outputs:
 - COUPLED: the event is matched first; on a match its lifetime is the median lifetime of the active events
