@@ -47,7 +47,8 @@ TEST(StereoEventMatcher_Confidence, rejection_is_the_threshold_and_the_confidenc
         if (!(all.truthFlags[i] & (GT_FLAG_NOISE | GT_FLAG_OCCLUDED)) && all.disparity[i] >= 0)
             ranked.push_back(std::make_pair(all.confidence[i], std::abs(all.disparity[i] - all.truth[i]) <= 1));
     }
-    // The more confident half is right more often than the less confident half.
+    // The more confident half is wrong (more than 1 px off) less than a quarter as often as the less confident
+    // half: the confidence ranks the estimates.
     std::sort(ranked.begin(), ranked.end(), [](const std::pair<float, bool>& a, const std::pair<float, bool>& b) { return a.first > b.first; });
     const size_t half = ranked.size() / 2;
     int64 goodTop = 0, goodBottom = 0;
@@ -56,7 +57,7 @@ TEST(StereoEventMatcher_Confidence, rejection_is_the_threshold_and_the_confidenc
     const double top = 100.0 * (double)goodTop / (double)half, bottom = 100.0 * (double)goodBottom / (double)(ranked.size() - half);
     std::cout << "boxes, threshold 0: within 1 px " << top << " % of the more confident half, " << bottom
               << " % of the less confident half" << std::endl;
-    EXPECT_GT(top, bottom + 10);
+    EXPECT_LT(100 - top, (100 - bottom) / 4);
     EXPECT_GT(top, 98);
 }
 
@@ -72,11 +73,11 @@ TEST(StereoEventMatcher_Confidence, temporal_prior_raises_the_matching_rate_on_s
     EXPECT_GT(within1(with), 96);
     // On a horizontal edge the row search cannot tell the candidates along the edge apart, and the event's
     // close neighbours are as ambiguous as it is: the prior reads along the row to the edge's ends. Measured:
-    // 59.5 % without the prior, 79.8 % with it (71.8 % when it read only 5 px to each side).
+    // 64.9 % without the prior, 88.9 % with it (82.2 % when it read only 5 px to each side).
     const double edgesWithout = matchingRate(without, true), edgesWith = matchingRate(with, true);
     std::cout << "boxes, events on horizontal edges: matching rate " << edgesWithout << " % without the prior, "
               << edgesWith << " % with it" << std::endl;
-    EXPECT_GT(edgesWith, edgesWithout + 15);
+    EXPECT_GT(edgesWith, edgesWithout + 20);
 }
 
 }}  // namespace

@@ -332,6 +332,8 @@ TEST(StereoEventMatcher, bad_input_raises_errors_that_name_the_event)
     EXPECT_THROW(m->processEvent(Event(1000, 1, 1, 1, 0), s), cv::Exception);
     EXPECT_THROW(m->setMaxDisparity(-1), cv::Exception);
     EXPECT_THROW(m->setCostWindow(4), cv::Exception);
+    EXPECT_THROW(m->setLifetimeWindow(4), cv::Exception);
+    EXPECT_THROW(m->setLifetimeWindow(33), cv::Exception);
     EXPECT_THROW(m->setMode(7), cv::Exception);
     EXPECT_THROW(m->setActiveDistance(0), cv::Exception);
     EXPECT_THROW(m->setActiveDistance(std::numeric_limits<double>::quiet_NaN()), cv::Exception);
@@ -351,6 +353,7 @@ TEST(StereoEventMatcher, parameters_round_trip_through_FileStorage)
     a->setDescriptorWindow(5);
     a->setMaxVectorLength(2);
     a->setCostWindow(7);
+    a->setLifetimeWindow(5);
     a->setAggregationWindow(13);
     a->setUniquenessRatio(30);
     a->setMinConfidence(0.4);
@@ -372,6 +375,7 @@ TEST(StereoEventMatcher, parameters_round_trip_through_FileStorage)
     EXPECT_EQ(b->getDescriptorWindow(), 5);
     EXPECT_EQ(b->getMaxVectorLength(), 2);
     EXPECT_EQ(b->getCostWindow(), 7);
+    EXPECT_EQ(b->getLifetimeWindow(), 5);
     EXPECT_EQ(b->getAggregationWindow(), 13);
     EXPECT_EQ(b->getUniquenessRatio(), 30);
     EXPECT_EQ(b->getMinConfidence(), 0.4);

@@ -68,9 +68,9 @@ enum
 {
     LANES = v_uint8::nlanes,
     DESCRIPTOR_BYTES = DescriptorCostKernels::DESCRIPTOR_BYTES,
-    // Full chunks of a row of the default 9 x 9 cost window, and of an aggregation ring's one-descriptor column:
+    // Full chunks of a row of the default 17 x 17 cost window, and of an aggregation ring's one-descriptor column:
     // the two row shapes the matcher uses most, unrolled at compile time.
-    WINDOW_ROW_CHUNKS = 9 * DESCRIPTOR_BYTES / LANES,
+    WINDOW_ROW_CHUNKS = 17 * DESCRIPTOR_BYTES / LANES,
     COLUMN_CHUNKS = DESCRIPTOR_BYTES / LANES
 };
 

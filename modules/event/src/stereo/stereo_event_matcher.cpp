@@ -524,8 +524,8 @@ double StereoEventMatcherImpl::getLifetimeSeconds() const
 
 void StereoEventMatcherImpl::sizeScratch(MatchScratch& s) const
 {
-    s.matchedRows.resize((size_t)costWindow_);
-    s.matchedKeys.resize((size_t)costWindow_ * costWindow_);
+    s.matchedRows.resize((size_t)lifetimeWindow_);
+    s.matchedKeys.resize((size_t)lifetimeWindow_ * lifetimeWindow_);
     const size_t range = (size_t)(maxDisparity_ - minDisparity_ + 1);
     s.candidates.resize(range);
     s.offsets.resize(range);
@@ -610,6 +610,12 @@ void StereoEventMatcherImpl::setCostWindow(int w)
     reset();
 }
 
+void StereoEventMatcherImpl::setLifetimeWindow(int w)
+{
+    lifetimeWindow_ = oddWindow(w, 1, 31, "lifetime window");
+    reset();
+}
+
 void StereoEventMatcherImpl::setAggregationWindow(int a)
 {
     aggregationWindow_ = oddWindow(a, costWindow_, 31, "aggregation window (>= the cost window)");
@@ -672,7 +678,8 @@ void StereoEventMatcherImpl::write(FileStorage& fs) const
     writeFormat(fs);
     fs << "mode" << getStereoModeName(mode_) << "sensorWidth" << size_.width << "sensorHeight" << size_.height
        << "minDisparity" << minDisparity_ << "maxDisparity" << maxDisparity_ << "descriptorWindow" << descriptorWindow_
-       << "maxVectorLength" << maxVectorLength_ << "costWindow" << costWindow_ << "aggregationWindow"
+       << "maxVectorLength" << maxVectorLength_ << "costWindow" << costWindow_ << "lifetimeWindow"
+       << lifetimeWindow_ << "aggregationWindow"
        << aggregationWindow_ << "uniquenessRatio" << uniquenessRatio_ << "minConfidence" << minConfidence_
        << "priorTolerance" << priorTolerance_ << "lookAhead" << (double)lookAhead_ << "fixedInterval" << (double)fixedInterval_
        << "frameWindow" << (double)frameWindow_ << "maxLifetime" << (double)maxLifetime_ << "activeDistance"
@@ -706,6 +713,7 @@ void StereoEventMatcherImpl::read(const FileNode& fn)
     setDescriptorWindow((int)num("descriptorWindow", descriptorWindow_));
     setMaxVectorLength((int)num("maxVectorLength", maxVectorLength_));
     setCostWindow((int)num("costWindow", costWindow_));
+    setLifetimeWindow((int)num("lifetimeWindow", lifetimeWindow_));
     setAggregationWindow((int)num("aggregationWindow", aggregationWindow_));
     setUniquenessRatio((int)num("uniquenessRatio", uniquenessRatio_));
     setMinConfidence(num("minConfidence", minConfidence_));
@@ -762,7 +770,8 @@ void StereoEventMatcherImpl::setDisparityRange(int lo, int hi)
 // fit's window. Operations further apart in rows than the sum of their reaches touch disjoint state.
 int StereoEventMatcherImpl::eventRowReach() const
 {
-    return std::max({ aggregationWindow_ / 2, costWindow_ / 2, 1, (int)PRIOR_RADIUS, expiryRowReach(),
+    return std::max({ aggregationWindow_ / 2, costWindow_ / 2, lifetimeWindow_ / 2, 1, (int)PRIOR_RADIUS,
+                      expiryRowReach(),
                       lifetimeRowReach(*estimators_[0]), lifetimeRowReach(*estimators_[1]) });
 }
 

@@ -99,6 +99,9 @@ public:
     int getCostWindow() const CV_OVERRIDE { return costWindow_; }
 
     void setCostWindow(int w) CV_OVERRIDE;
+    int getLifetimeWindow() const CV_OVERRIDE { return lifetimeWindow_; }
+
+    void setLifetimeWindow(int w) CV_OVERRIDE;
     int getAggregationWindow() const CV_OVERRIDE { return aggregationWindow_; }
 
     void setAggregationWindow(int a) CV_OVERRIDE;
@@ -267,7 +270,7 @@ private:
     Size size_;
     int mode_ = STEREO_COUPLED;
     int minDisparity_ = 0, maxDisparity_ = 40;
-    int descriptorWindow_ = 3, maxVectorLength_ = 3, costWindow_ = 9, aggregationWindow_ = 31, uniquenessRatio_ = 15;
+    int descriptorWindow_ = 3, maxVectorLength_ = 3, costWindow_ = 17, lifetimeWindow_ = 9, aggregationWindow_ = 31, uniquenessRatio_ = 15;
     int64 fixedInterval_ = 10000, frameWindow_ = 33000, maxLifetime_ = 100000;
     double activeDistance_ = 2.5;
     double minConfidence_ = 0.15;

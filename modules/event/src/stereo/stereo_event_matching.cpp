@@ -359,7 +359,7 @@ size_t StereoEventMatcherImpl::activeEstimateMedian(int c, Point centre, int rad
     return disparities.size();
 }
 
-// Median lifetime (and the flow of that event) of the active events of polarity p in the cost window
+// Median lifetime (and the flow of that event) of the active events of polarity p in the lifetime window
 // around (x, y) of sensor c. False when none has a lifetime.
 // Matched events copy their lifetime, so most windows hold equal lifetimes: the median is taken in the order
 // (lifetime, position in the map), which fixes whose flow is returned whatever the selection algorithm.
@@ -368,7 +368,7 @@ size_t StereoEventMatcherImpl::activeEstimateMedian(int c, Point centre, int rad
 bool StereoEventMatcherImpl::matchedLifetime(int c, int x, int y, int p, MatchScratch& s, float& lifetime, Vec2f& flow) const
 {
     const ZouDescriptorMap& map = maps_[c];
-    const int h = costWindow_ / 2;
+    const int h = lifetimeWindow_ / 2;
     const int x0 = std::max(0, x - h), x1 = std::min(size_.width - 1, x + h);
     const int y0 = std::max(0, y - h), y1 = std::min(size_.height - 1, y + h);
     const int width = x1 - x0 + 1;  // <= 31: a row's activity fits one 32-bit mask

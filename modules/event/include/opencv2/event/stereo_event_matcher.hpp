@@ -113,8 +113,8 @@ neighbours in turn, so that an object's disparity reaches the image's edge from 
 
 **Modes** (StereoMatchMode), all with the same outputs:
 - COUPLED: the event is matched first; on a match its lifetime is the median lifetime of the active events
-  of its polarity in the matched W x W window of the other sensor and its plane is not fitted; otherwise
-  the LifetimeEstimator of its sensor fits one (or classifies it as noise).
+  of its polarity in the other sensor's window of getLifetimeWindow() (9) around the counterpart, and its
+  plane is not fitted; otherwise the LifetimeEstimator of its sensor fits one (or classifies it as noise).
 - DECOUPLED: the LifetimeEstimator runs for every event, then the event is matched.
 - FIXED_INTERVAL: every event is active for getFixedInterval() microseconds; no lifetimes.
 - FRAME_SGBM: per time window (getFrameWindow(), aligned to multiples of it), each sensor's events are
@@ -198,9 +198,14 @@ public:
     /** @brief Longest nearest-active-event vector that votes [px] (default 3). */
     CV_WRAP virtual int getMaxVectorLength() const = 0;
     CV_WRAP virtual void setMaxVectorLength(int r) = 0;
-    /** @brief W, the side of the first cost window (odd, default 9). */
+    /** @brief W, the side of the first cost window (odd, default 17). */
     CV_WRAP virtual int getCostWindow() const = 0;
     CV_WRAP virtual void setCostWindow(int w) = 0;
+    /** @brief COUPLED: the side of the window of the other sensor, centred on the counterpart, whose median
+    lifetime a matched event takes (odd, at most 31, default 9). The paper takes the matched cost window;
+    a window wider than the edge's neighbourhood mixes in other edges' speeds. */
+    CV_WRAP virtual int getLifetimeWindow() const = 0;
+    CV_WRAP virtual void setLifetimeWindow(int w) = 0;
     /** @brief A, the side of the largest window the iterative aggregation grows to (odd, >= W, at most 31, default 31). */
     CV_WRAP virtual int getAggregationWindow() const = 0;
     CV_WRAP virtual void setAggregationWindow(int a) = 0;
