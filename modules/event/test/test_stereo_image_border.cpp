@@ -98,7 +98,8 @@ TEST(StereoEventMatcher_ImageBorder, the_near_object_past_the_other_view_takes_i
             if (run.disparity[i] >= 0)
                 (std::abs(run.disparity[i] - run.truth[i]) <= 1 ? within : wrong)++;
         }
-    const double withinShare = 100.0 * (double)within / (double)unseen, wrongShare = 100.0 * (double)wrong / (double)unseen;
+    const double withinShare = 100.0 * (double)within / (double)unseen;
+    const double wrongShare = 100.0 * (double)wrong / (double)unseen;
     std::cout << "boxes, left events the right camera does not see: " << unseen << ", " << withinShare
               << " % within 1 px, " << wrongShare << " % further off" << std::endl;
     ASSERT_GT(unseen, 1000);

@@ -170,7 +170,8 @@ void StereoEventMatcherImpl::processAdmitted(const Event& e, Point r, int64 cold
     if (mode_ == STEREO_COUPLED)
     {
         const LifetimeTimer timer(timeLifetimes_, s.lifetimeTicks);
-        if (est.disparity >= 0 && m.counterpartX >= 0 && matchedLifetime(1 - c, m.counterpartX, r.y, p, s, est.lifetime, est.flow))
+        if (est.disparity >= 0 && m.counterpartX >= 0
+            && matchedLifetime(1 - c, m.counterpartX, r.y, p, s, est.lifetime, est.flow))
         {
             insertEventInRows(estimator, re, est.lifetime, est.flow, s.lifetimes[c]);
             status = LIFETIME_MATCHED;
@@ -678,9 +679,9 @@ void StereoEventMatcherImpl::write(FileStorage& fs) const
     writeFormat(fs);
     fs << "mode" << getStereoModeName(mode_) << "sensorWidth" << size_.width << "sensorHeight" << size_.height
        << "minDisparity" << minDisparity_ << "maxDisparity" << maxDisparity_ << "descriptorWindow" << descriptorWindow_
-       << "maxVectorLength" << maxVectorLength_ << "costWindow" << costWindow_ << "lifetimeWindow"
-       << lifetimeWindow_ << "aggregationWindow"
-       << aggregationWindow_ << "uniquenessRatio" << uniquenessRatio_ << "minConfidence" << minConfidence_
+       << "maxVectorLength" << maxVectorLength_ << "costWindow" << costWindow_ << "lifetimeWindow" << lifetimeWindow_
+       << "aggregationWindow" << aggregationWindow_ << "uniquenessRatio" << uniquenessRatio_
+       << "minConfidence" << minConfidence_
        << "priorTolerance" << priorTolerance_ << "lookAhead" << (double)lookAhead_ << "fixedInterval" << (double)fixedInterval_
        << "frameWindow" << (double)frameWindow_ << "maxLifetime" << (double)maxLifetime_ << "activeDistance"
        << activeDistance_;
@@ -771,8 +772,7 @@ void StereoEventMatcherImpl::setDisparityRange(int lo, int hi)
 int StereoEventMatcherImpl::eventRowReach() const
 {
     return std::max({ aggregationWindow_ / 2, costWindow_ / 2, lifetimeWindow_ / 2, 1, (int)PRIOR_RADIUS,
-                      expiryRowReach(),
-                      lifetimeRowReach(*estimators_[0]), lifetimeRowReach(*estimators_[1]) });
+                      expiryRowReach(), lifetimeRowReach(*estimators_[0]), lifetimeRowReach(*estimators_[1]) });
 }
 
 // ---- rendering

@@ -27,7 +27,8 @@ struct MatchResult
     float disparity = -1.f;  // -1: no candidate
     int counterpartX = -1;   // the matched pixel of the other sensor (integer disparity); -1: not matched
     float confidence = 0.f;  // StereoEventEstimate::confidence
-    int flags = 0;           // STEREO_NO_COUNTERPART when there was no candidate; STEREO_BEYOND_VIEW
+    int flags = 0;           // STEREO_NO_COUNTERPART when there was no candidate; STEREO_BEYOND_VIEW when the
+                             // neighbours' estimates decided (estimateBeyondView)
 };
 
 /** The working memory of matching one event (one per thread): the candidates as disparity index (disparity -
@@ -270,7 +271,8 @@ private:
     Size size_;
     int mode_ = STEREO_COUPLED;
     int minDisparity_ = 0, maxDisparity_ = 40;
-    int descriptorWindow_ = 3, maxVectorLength_ = 3, costWindow_ = 17, lifetimeWindow_ = 9, aggregationWindow_ = 31, uniquenessRatio_ = 15;
+    int descriptorWindow_ = 3, maxVectorLength_ = 3, costWindow_ = 17, lifetimeWindow_ = 9, aggregationWindow_ = 31;
+    int uniquenessRatio_ = 15;
     int64 fixedInterval_ = 10000, frameWindow_ = 33000, maxLifetime_ = 100000;
     double activeDistance_ = 2.5;
     double minConfidence_ = 0.15;

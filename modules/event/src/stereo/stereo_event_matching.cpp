@@ -59,6 +59,16 @@ inline uint64 scaleToWindow(uint64 cost, int width, int seen)
     return seen == width ? cost : (cost * (uint64)width + (uint64)seen / 2) / (uint64)seen;
 }
 
+// The share of the neighbourhood's estimates within a pixel of their median: the confidence of an estimate
+// the neighbours decide (the temporal prior, an event past the other camera's view).
+inline float agreeingShare(const std::vector<float>& disparities, float median)
+{
+    int agree = 0;
+    for (float v : disparities)
+        agree += std::abs(v - median) <= 1.f;
+    return (float)agree / (float)disparities.size();
+}
+
 }  // namespace
 
 int StereoEventMatcherImpl::unseenColumns(int sign, Point r, int x0, int x1, int d) const
@@ -267,13 +277,10 @@ bool StereoEventMatcherImpl::decideByPrior(int c, Point r, int64 t, const unsign
             chosen = i;
     if (chosen < 0 || (uint64)score[chosen] * 100 > (uint64)bestCost * (uint64)(100 + priorTolerance_))
         return false;
-    int agree = 0;  // s.disparities still holds the neighbourhood: consistent() below reuses it
-    for (float v : s.disparities)
-        agree += std::abs(v - prior) <= 1.f;
     const int d = minDisparity_ + candidates[chosen];
     m.disparity = (float)d;
     m.counterpartX = r.x + (c == CAMERA_LEFT ? -d : d);
-    m.confidence = (float)agree / (float)support;
+    m.confidence = agreeingShare(s.disparities, prior);  // before consistent() below refills s.disparities
     if (!consistent(1 - c, m.counterpartX, r.y, d, t, s))
         m.confidence = 0.f;
     return true;
@@ -317,11 +324,8 @@ bool StereoEventMatcherImpl::estimateBeyondView(int c, Point r, int64 t, MatchSc
     const size_t support = activeEstimateMedian(c, r, PRIOR_RADIUS, PRIOR_ROW_REACH, t, s, prior);
     if (support < PRIOR_SUPPORT || cvRound(prior) <= fromBorder)
         return false;
-    int agree = 0;
-    for (float v : s.disparities)
-        agree += std::abs(v - prior) <= 1.f;
     m.disparity = prior;
-    m.confidence = (float)agree / (float)support;
+    m.confidence = agreeingShare(s.disparities, prior);
     m.flags = STEREO_BEYOND_VIEW;
     return true;
 }
