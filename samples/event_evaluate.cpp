@@ -195,7 +195,8 @@ public:
     {
         matcher_->setFrameWindow(windowUs);
         applyMatcherSettings(matcher_, settings);
-        if (mode != STEREO_FRAME_SGBM)
+        // Without rejection (the default) the run itself gives every event's best estimate.
+        if (mode != STEREO_FRAME_SGBM && matcher_->getMinConfidence() > 0)
         {
             unfiltered_ = StereoEventMatcher::create(size, mode);
             applyMatcherSettings(unfiltered_, settings);
@@ -217,6 +218,12 @@ public:
 
     void processUnfiltered(const std::vector<Event>& window, MethodOutput& out) CV_OVERRIDE
     {
+        if (!unfiltered_ && matcher_->getMode() != STEREO_FRAME_SGBM)
+        {
+            out.bestDisparity = out.disparity;
+            out.bestConfidence = out.confidence;
+            return;
+        }
         if (!unfiltered_)
             return Method::processUnfiltered(window, out);
         Mat disparity, confidence;

@@ -75,6 +75,8 @@ matcher = ev.StereoEventMatcher_create((64, 24), ev.STEREO_COUPLED)
 calib = ev.StereoCalibration_fromRectified((64, 24), 100.0, 0.1)
 assert abs(calib.baseline() - 0.1) < 1e-12 and calib.P2.shape == (3, 4)
 matcher.setMaxDisparity(30)
+assert matcher.getMinConfidence() == 0  # by default every event keeps its best estimate
+matcher.setMinConfidence(0.15)
 disparity, lifetime, flags, depth, flow, confidence = matcher.process(stereo)
 found = disparity.ravel() >= 0
 # Kept estimates reach the rejection threshold; rejected ones (STEREO_AMBIGUOUS) stay below it.

@@ -29,6 +29,22 @@ struct Accuracy
 {
     double density = 0, within1 = 0, meanAbsError = 0, depthError = 0;
     int64 lifetimes[2] = { 0, 0 };
+    int64 candidates = 0;
+    std::vector<std::pair<float, bool>> estimates;  // confidence, within 1 px
+
+    // The share within 1 px [%] of the most confident estimates, as many as `density` % of the candidates
+    // (all estimates when there are fewer).
+    double within1AtDensity(double density) const
+    {
+        std::vector<std::pair<float, bool>> ranked = estimates;
+        std::stable_sort(ranked.begin(), ranked.end(),
+                         [](const std::pair<float, bool>& a, const std::pair<float, bool>& b) { return a.first > b.first; });
+        const size_t n = std::min(ranked.size(), (size_t)std::llround(density / 100.0 * (double)candidates));
+        int64 good = 0;
+        for (size_t i = 0; i < n; i++)
+            good += ranked[i].second;
+        return 100.0 * (double)good / (double)std::max<size_t>(1, n);
+    }
 };
 
 // Runs a matcher on `ms` of a simulated scene; accuracy over non-occluded signal events (with borderBand > 0:
@@ -44,11 +60,11 @@ Accuracy simulate(const std::string& scene, int mode, double ms, int borderBand 
     int64 candidates = 0, estimated = 0, within1 = 0;
     double absError = 0, depthError = 0;
     std::vector<Event> ev;
-    Mat gt, d, lt, fl, depth;
+    Mat gt, d, lt, fl, depth, confidence;
     for (double t = 33000; t <= ms * 1000 + 1; t += 33000)  // windows: what FRAME_SGBM needs, the same for all
     {
         sim->generate(t, ev, gt);
-        m->process(ev, d, lt, fl, depth);
+        m->process(ev, d, lt, fl, depth, noArray(), confidence);
         for (int i = 0; i < (int)ev.size(); i++)
         {
             const int flags = (int)gt.at<float>(i, GT_FLAGS);
@@ -65,10 +81,12 @@ Accuracy simulate(const std::string& scene, int mode, double ms, int borderBand 
             estimated++;
             const double err = std::abs(d.at<float>(i) - gt.at<float>(i, GT_DISPARITY));
             within1 += err <= 1;
+            a.estimates.push_back(std::make_pair(confidence.at<float>(i), err <= 1));
             absError += err;
             depthError += std::abs(depth.at<float>(i) - gt.at<float>(i, GT_DEPTH)) / gt.at<float>(i, GT_DEPTH);
         }
     }
+    a.candidates = candidates;
     a.density = 100.0 * (double)estimated / (double)std::max<int64>(1, candidates);
     a.within1 = 100.0 * (double)within1 / (double)std::max<int64>(1, estimated);
     a.meanAbsError = absError / (double)std::max<int64>(1, estimated);
@@ -178,12 +196,11 @@ TEST(StereoEventMatcher, events_at_the_outer_border_keep_their_disparity)
 
 // What users do today (frames + SGBM), on the three textured scenes: COUPLED estimates more events (higher
 // density), gets more of all non-occluded events right (within 1 px; by at least 5 points on the
-// fronto-parallel plane and the occlusion scene, where SGBM's frames lose most), and its estimates are as
-// precise: the share within 1 px no more than 0.15 points below SGBM's. Measured at 264 ms (density /
-// within 1 px, COUPLED against SGBM): plane 99.2 / 99.92 % against 86.9 / 99.9997 % (within 1 px it was
-// 99.78 % before a winner had to beat "no counterpart" by the uniqueness margin), two_planes 95.7 / 99.41 %
-// against 79.2 / 99.20 %, cluttered 86.6 / 97.28 % against 80.65 / 96.81 % (80.6 % density, level with
-// SGBM, with a uniqueness ratio of 25 % and the cold start's events active for one fixed interval).
+// fronto-parallel plane and the occlusion scene, where SGBM's frames lose most), and at SGBM's density its
+// most confident estimates are as precise as SGBM's: the share within 1 px no more than 0.15 points below.
+// Every event keeps its best estimate by default, so all of COUPLED's estimates together are less precise
+// than SGBM's fewer ones (264 ms, within 1 px of all estimates: two_planes 98.5 % against 99.2 %, cluttered
+// 95.4 % against 96.8 %); the confidence picks the precise ones (at SGBM's density: 99.9 and 97.9 %).
 TEST(StereoEventMatcher, coupled_beats_frame_sgbm_on_textured_scenes)
 {
     const struct { const char* scene; double morePointsRight; } scenes[] = {
@@ -198,7 +215,9 @@ TEST(StereoEventMatcher, coupled_beats_frame_sgbm_on_textured_scenes)
         EXPECT_GE(coupled.density, sgbm.density) << s.scene;
         EXPECT_GE(coupled.density * coupled.within1 / 100, sgbm.density * sgbm.within1 / 100 + s.morePointsRight)
             << s.scene;
-        EXPECT_GE(coupled.within1, sgbm.within1 - 0.15) << s.scene;
+        const double atSgbmDensity = coupled.within1AtDensity(sgbm.density);
+        std::cout << s.scene << ": coupled at sgbm's density: within 1 px " << atSgbmDensity << " %" << std::endl;
+        EXPECT_GE(atSgbmDensity, sgbm.within1 - 0.15) << s.scene;
     }
 }
 
@@ -339,6 +358,8 @@ TEST(StereoEventMatcher, bad_input_raises_errors_that_name_the_event)
     EXPECT_THROW(m->setActiveDistance(std::numeric_limits<double>::quiet_NaN()), cv::Exception);
     EXPECT_THROW(m->setMinConfidence(1.5), cv::Exception);
     EXPECT_THROW(m->setMinConfidence(std::numeric_limits<double>::quiet_NaN()), cv::Exception);
+    EXPECT_THROW(m->setMatchedLifetimeConfidence(-0.1), cv::Exception);
+    EXPECT_THROW(m->setMatchedLifetimeConfidence(std::numeric_limits<double>::quiet_NaN()), cv::Exception);
     EXPECT_THROW(m->setPriorTolerance(-1), cv::Exception);
     EXPECT_THROW(m->setLookAhead(-1), cv::Exception);
     EXPECT_THROW(m->setLookAhead(2e6), cv::Exception);
@@ -357,6 +378,7 @@ TEST(StereoEventMatcher, parameters_round_trip_through_FileStorage)
     a->setAggregationWindow(13);
     a->setUniquenessRatio(30);
     a->setMinConfidence(0.4);
+    a->setMatchedLifetimeConfidence(0.6);
     a->setPriorTolerance(55);
     a->setLookAhead(2500);
     a->setFixedInterval(5000);
@@ -379,6 +401,7 @@ TEST(StereoEventMatcher, parameters_round_trip_through_FileStorage)
     EXPECT_EQ(b->getAggregationWindow(), 13);
     EXPECT_EQ(b->getUniquenessRatio(), 30);
     EXPECT_EQ(b->getMinConfidence(), 0.4);
+    EXPECT_EQ(b->getMatchedLifetimeConfidence(), 0.6);
     EXPECT_EQ(b->getPriorTolerance(), 55);
     EXPECT_EQ(b->getLookAhead(), 2500);
     EXPECT_EQ(b->getFixedInterval(), 5000);

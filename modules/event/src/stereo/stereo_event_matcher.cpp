@@ -170,7 +170,9 @@ void StereoEventMatcherImpl::processAdmitted(const Event& e, Point r, int64 cold
     if (mode_ == STEREO_COUPLED)
     {
         const LifetimeTimer timer(timeLifetimes_, s.lifetimeTicks);
-        if (est.disparity >= 0 && m.counterpartX >= 0
+        // An uncertain match's window may be another edge's: above 0, matchedLifetimeConfidence_ lets such an
+        // event fit its own plane instead.
+        if (est.disparity >= 0 && m.counterpartX >= 0 && m.confidence >= matchedLifetimeConfidence_
             && matchedLifetime(1 - c, m.counterpartX, r.y, p, s, est.lifetime, est.flow))
         {
             insertEventInRows(estimator, re, est.lifetime, est.flow, s.lifetimes[c]);
@@ -638,6 +640,14 @@ void StereoEventMatcherImpl::setMinConfidence(double c)
     minConfidence_ = c;
 }
 
+void StereoEventMatcherImpl::setMatchedLifetimeConfidence(double c)
+{
+    if (!(c >= 0 && c <= 1))
+        CV_Error_(Error::StsBadArg, ("StereoEventMatcher: matched lifetime confidence %g; must be 0..1 (0: every match "
+                                     "passes its counterpart's lifetime)", c));
+    matchedLifetimeConfidence_ = c;
+}
+
 void StereoEventMatcherImpl::setPriorTolerance(int percent)
 {
     if (percent < 0 || percent > 1000)
@@ -681,7 +691,7 @@ void StereoEventMatcherImpl::write(FileStorage& fs) const
        << "minDisparity" << minDisparity_ << "maxDisparity" << maxDisparity_ << "descriptorWindow" << descriptorWindow_
        << "maxVectorLength" << maxVectorLength_ << "costWindow" << costWindow_ << "lifetimeWindow" << lifetimeWindow_
        << "aggregationWindow" << aggregationWindow_ << "uniquenessRatio" << uniquenessRatio_
-       << "minConfidence" << minConfidence_
+       << "minConfidence" << minConfidence_ << "matchedLifetimeConfidence" << matchedLifetimeConfidence_
        << "priorTolerance" << priorTolerance_ << "lookAhead" << (double)lookAhead_ << "fixedInterval" << (double)fixedInterval_
        << "frameWindow" << (double)frameWindow_ << "maxLifetime" << (double)maxLifetime_ << "activeDistance"
        << activeDistance_;
@@ -718,6 +728,7 @@ void StereoEventMatcherImpl::read(const FileNode& fn)
     setAggregationWindow((int)num("aggregationWindow", aggregationWindow_));
     setUniquenessRatio((int)num("uniquenessRatio", uniquenessRatio_));
     setMinConfidence(num("minConfidence", minConfidence_));
+    setMatchedLifetimeConfidence(num("matchedLifetimeConfidence", matchedLifetimeConfidence_));
     setPriorTolerance((int)num("priorTolerance", priorTolerance_));
     setLookAhead(num("lookAhead", (double)lookAhead_));
     setFixedInterval(num("fixedInterval", (double)fixedInterval_));

@@ -112,6 +112,9 @@ public:
     double getMinConfidence() const CV_OVERRIDE { return minConfidence_; }
 
     void setMinConfidence(double c) CV_OVERRIDE;
+    double getMatchedLifetimeConfidence() const CV_OVERRIDE { return matchedLifetimeConfidence_; }
+
+    void setMatchedLifetimeConfidence(double c) CV_OVERRIDE;
     int getPriorTolerance() const CV_OVERRIDE { return priorTolerance_; }
 
     void setPriorTolerance(int percent) CV_OVERRIDE;
@@ -275,7 +278,7 @@ private:
     int uniquenessRatio_ = 15;
     int64 fixedInterval_ = 10000, frameWindow_ = 33000, maxLifetime_ = 100000;
     double activeDistance_ = 2.5;
-    double minConfidence_ = 0.15;
+    double minConfidence_ = 0, matchedLifetimeConfidence_ = 0;
     int priorTolerance_ = 30;
     int64 lookAhead_ = 10000;
     StereoCalibration calibration_;

@@ -87,11 +87,11 @@ descriptor mass, on either sensor). Aggregation is iterative: while the winner d
 alternative by the uniqueness ratio (its cost below (100 - ratio) % of theirs), the window grows by a ring
 of one pixel, up to A x A. The winner (refined to sub-pixel by a parabola through its neighbours' costs)
 gets a **confidence**, 1 - its cost / the best alternative's cost, set to 0 when the other sensor's own
-estimates around the counterpart disagree by more than a pixel (left-right check). Estimates whose
-confidence is below getMinConfidence() are rejected: the event is flagged STEREO_AMBIGUOUS and gets no
-disparity rather than a likely wrong one, but its confidence is still output. The confidence ranks
-estimates: keeping only the most confident trades density for precision (event_evaluate draws that curve);
-setMinConfidence(0) keeps every event's best estimate.
+estimates around the counterpart disagree by more than a pixel (left-right check). By default every event
+keeps its best estimate with its confidence, which ranks the estimates: keeping only the most confident
+trades density for precision (event_evaluate draws that curve). With setMinConfidence(t), t > 0, the
+estimates whose confidence is below t are rejected: the event is flagged STEREO_AMBIGUOUS and gets no
+disparity rather than a likely wrong one, but its confidence is still output.
 
 **Temporal prior.** An edge crosses the sensor a pixel at a time, so what its events were matched to a
 moment ago, nearby, is most often what the next one should be matched to. When the aggregation ends
@@ -112,9 +112,10 @@ not matched, and in COUPLED its lifetime comes from its own plane fit. Its estim
 neighbours in turn, so that an object's disparity reaches the image's edge from the part both cameras see.
 
 **Modes** (StereoMatchMode), all with the same outputs:
-- COUPLED: the event is matched first; on a match its lifetime is the median lifetime of the active events
-  of its polarity in the other sensor's window of getLifetimeWindow() (9) around the counterpart, and its
-  plane is not fitted; otherwise the LifetimeEstimator of its sensor fits one (or classifies it as noise).
+- COUPLED: the event is matched first; on a match (whose confidence reaches getMatchedLifetimeConfidence(),
+  by default any) its lifetime is the median lifetime of the active events of its polarity in the other
+  sensor's window of getLifetimeWindow() (9) around the counterpart, and its plane is not fitted; otherwise
+  the LifetimeEstimator of its sensor fits one (or classifies it as noise).
 - DECOUPLED: the LifetimeEstimator runs for every event, then the event is matched.
 - FIXED_INTERVAL: every event is active for getFixedInterval() microseconds; no lifetimes.
 - FRAME_SGBM: per time window (getFrameWindow(), aligned to multiples of it), each sensor's events are
@@ -215,9 +216,14 @@ public:
     CV_WRAP virtual int getUniquenessRatio() const = 0;
     CV_WRAP virtual void setUniquenessRatio(int ratio) = 0;
     /** @brief Estimates with a lower confidence (StereoEventEstimate::confidence, 0..1) are rejected: no
-    disparity, STEREO_AMBIGUOUS (default 0.15). 0 keeps every event's best estimate. */
+    disparity, STEREO_AMBIGUOUS (default 0: every event keeps its best estimate). */
     CV_WRAP virtual double getMinConfidence() const = 0;
     CV_WRAP virtual void setMinConfidence(double confidence) = 0;
+    /** @brief COUPLED: the confidence a match needs for the event to take its lifetime from the other
+    sensor's window around the counterpart (0..1, default 0: every kept match does); after a less confident
+    one the event fits its own plane. Raising it gives fewer events a lifetime, more of them accurate. */
+    CV_WRAP virtual double getMatchedLifetimeConfidence() const = 0;
+    CV_WRAP virtual void setMatchedLifetimeConfidence(double confidence) = 0;
     /** @brief Temporal prior: how much more [%] than the best the cost of the candidate at the prior may be
     for it to win an otherwise ambiguous match (default 30; 0..1000; 0: no prior, the method as published). */
     CV_WRAP virtual int getPriorTolerance() const = 0;
