@@ -88,11 +88,11 @@ double percentile(std::vector<float>& v, double q)
     return v[k];
 }
 
-Recording simulated(const std::string& scene, double durationMs)
+Recording simulated(const std::string& scene, double durationMs, int sensorModel)
 {
     Recording r;
-    Ptr<StereoEventSimulator> sim = StereoEventSimulator::create(scene);
-    r.name = scene + " (sim)";
+    Ptr<StereoEventSimulator> sim = StereoEventSimulator::create(scene, sensorModel);
+    r.name = scene + (sensorModel == SENSOR_DAVIS240 ? " (sim)" : " (sim, " + getSensorModelName(sensorModel) + ")");
     r.size = sim->getSensorSize();
     for (double t = 33000; t < durationMs * 1000 + 33000; t += 33000)
     {
@@ -278,6 +278,7 @@ const char* const keys =
     "{help h      | false                                 | print this message}"
     "{duration-ms | 500                                   | length of each simulated scene [ms]}"
     "{scenes      | plane,two_planes,faint_line,cluttered | simulated scenes, comma separated}"
+    "{sensor      | DAVIS240                              | the simulated scenes' sensor: DAVIS240 or DAVIS346}"
     "{shared      | ../shared/data                        | folder holding stereo_dvs128_tum/ (the real pairs, when present)}"
     "{markdown    |                                       | also write the tables to this file}"
     "{soak-events | 0                                     | stream this many events through one COUPLED matcher, printing its memory}"
@@ -290,6 +291,7 @@ int main(int argc, char** argv)
     int64 soakEvents = 0;
     int repeat = 1;
     std::string scenes, shared, markdown, threadList;
+    int sensorModel = SENSOR_DAVIS240;
     try
     {
         SampleCommandLine cmd(argc, argv, keys,
@@ -303,6 +305,10 @@ int main(int argc, char** argv)
         soakEvents = (int64)cmd.get<double>("soak-events");
         threadList = cmd.get<std::string>("threads");
         repeat = cmd.get<int>("repeat");
+        const std::string sensor = cmd.get<std::string>("sensor");
+        sensorModel = findSensorModel(sensor);
+        if (sensorModel != SENSOR_DAVIS240 && sensorModel != SENSOR_DAVIS346)
+            throw std::invalid_argument("--sensor must be DAVIS240 or DAVIS346 (the simulator's presets), got " + sensor);
         if (repeat < 1)
             throw std::invalid_argument("--repeat must be at least 1, got " + std::to_string(repeat));
     }
@@ -319,7 +325,7 @@ int main(int argc, char** argv)
         while (std::getline(list, scene, ','))
         {
             std::cerr << "simulating " << scene << " (" << durationMs << " ms)...\n";
-            recordings.push_back(simulated(scene, durationMs));
+            recordings.push_back(simulated(scene, durationMs, sensorModel));
         }
         for (const char* name : { "Fan_disp8", "Rotation_disp11", "Translation_disp12" })
         {
