@@ -22,6 +22,7 @@
 // shifted on every pass) and prints the resident memory at every tenth: it stays flat.
 
 #include "resident_memory.hpp"
+#include "sample_algorithm_settings.hpp"
 #include "sample_command_line.hpp"
 
 #include <opencv2/event.hpp>
@@ -128,7 +129,15 @@ bool real(const std::string& path, const std::string& name, Recording& r)
     return true;
 }
 
-Result run(const Recording& rec, int mode)
+// A matcher of `mode` for the recording's sensor with --set's parameters.
+Ptr<StereoEventMatcher> createMatcher(const Recording& rec, int mode, const std::string& settings)
+{
+    Ptr<StereoEventMatcher> m = StereoEventMatcher::create(rec.size, mode);
+    applyMatcherSettings(m, settings);
+    return m;
+}
+
+Result run(const Recording& rec, int mode, const std::string& settings)
 {
     Result r;
     Mat d, lt, fl;
@@ -138,7 +147,7 @@ Result run(const Recording& rec, int mode)
     latency.clear();  // keeps the capacity
     bench::resetPeakResident();
     const double before = bench::residentMiB("VmRSS:");
-    Ptr<StereoEventMatcher> m = StereoEventMatcher::create(rec.size, mode);
+    Ptr<StereoEventMatcher> m = createMatcher(rec, mode, settings);
     m->setTimeLifetimes(true);
     StereoEventEstimate est;
     for (size_t w = 0; w < rec.windows.size(); w++)
@@ -195,9 +204,9 @@ Result run(const Recording& rec, int mode)
 }
 
 // process() over the recording's windows with `threads` row bands: seconds, and every output in `outputs`.
-double runThreads(const Recording& rec, int mode, int threads, std::vector<Mat>& outputs)
+double runThreads(const Recording& rec, int mode, int threads, const std::string& settings, std::vector<Mat>& outputs)
 {
-    Ptr<StereoEventMatcher> m = StereoEventMatcher::create(rec.size, mode);
+    Ptr<StereoEventMatcher> m = createMatcher(rec, mode, settings);
     m->setNumThreads(threads);
     outputs.clear();
     double seconds = 0;
@@ -225,9 +234,9 @@ bool sameBits(const std::vector<Mat>& a, const std::vector<Mat>& b)
 
 // Streams `events` events through one COUPLED matcher, replaying the recording with its time shifted on
 // every pass; prints the resident memory at every tenth.
-void soak(const Recording& rec, int64 events)
+void soak(const Recording& rec, int64 events, const std::string& settings)
 {
-    Ptr<StereoEventMatcher> m = StereoEventMatcher::create(rec.size, STEREO_COUPLED);
+    Ptr<StereoEventMatcher> m = createMatcher(rec, STEREO_COUPLED, settings);
     const int64 span = rec.windows.back().back().t - rec.windows.front().front().t + 33000;
     int64 done = 0, shift = 0, nextReport = 0;
     std::vector<Event> shifted;
@@ -279,6 +288,7 @@ const char* const keys =
     "{duration-ms | 500                                   | length of each simulated scene [ms]}"
     "{scenes      | plane,two_planes,faint_line,cluttered | simulated scenes, comma separated}"
     "{sensor      | DAVIS240                              | the simulated scenes' sensor: DAVIS240 or DAVIS346}"
+    "{set         |                                       | matcher parameters NAME=VALUE, comma separated (FileStorage names, e.g. costWindow=9)}"
     "{shared      | ../shared/data                        | folder holding stereo_dvs128_tum/ (the real pairs, when present)}"
     "{markdown    |                                       | also write the tables to this file}"
     "{soak-events | 0                                     | stream this many events through one COUPLED matcher, printing its memory}"
@@ -290,7 +300,7 @@ int main(int argc, char** argv)
     double durationMs = 0;
     int64 soakEvents = 0;
     int repeat = 1;
-    std::string scenes, shared, markdown, threadList;
+    std::string scenes, shared, markdown, threadList, settings;
     int sensorModel = SENSOR_DAVIS240;
     try
     {
@@ -305,6 +315,7 @@ int main(int argc, char** argv)
         soakEvents = (int64)cmd.get<double>("soak-events");
         threadList = cmd.get<std::string>("threads");
         repeat = cmd.get<int>("repeat");
+        settings = cmd.get<std::string>("set");
         const std::string sensor = cmd.get<std::string>("sensor");
         sensorModel = findSensorModel(sensor);
         if (sensorModel != SENSOR_DAVIS240 && sensorModel != SENSOR_DAVIS346)
@@ -357,7 +368,7 @@ int main(int argc, char** argv)
             for (int k = 0; k < repeat; k++)
                 for (int mode = STEREO_COUPLED; mode <= STEREO_FRAME_SGBM; mode++)
                 {
-                    const Result r = run(rec, mode);
+                    const Result r = run(rec, mode, settings);
                     if (k == 0)
                         res[mode] = r;
                     else
@@ -391,7 +402,7 @@ int main(int argc, char** argv)
                 double oneThread = 0;
                 for (size_t k = 0; k < threadCounts.size(); k++)
                 {
-                    const double s = runThreads(rec, mode, threadCounts[k], k == 0 ? first : outputs);
+                    const double s = runThreads(rec, mode, threadCounts[k], settings, k == 0 ? first : outputs);
                     if (k == 0)
                         oneThread = s;
                     bands << "| " << rec.name << " | " << getStereoModeName(mode) << " | " << threadCounts[k] << " | "
@@ -411,7 +422,7 @@ int main(int argc, char** argv)
         if (!markdown.empty())
             std::ofstream(markdown) << table.str();
         if (soakEvents > 0 && !recordings.empty())
-            soak(recordings.front(), soakEvents);
+            soak(recordings.front(), soakEvents, settings);
         return 0;
     }
     catch (const std::exception& e)
