@@ -61,31 +61,59 @@ TEST(StereoEventMatcher_Confidence, rejection_is_the_threshold_and_the_confidenc
     EXPECT_GT(top, 98);
 }
 
-// COUPLED copies a match's lifetime from the other sensor only when the match is confident enough; after a
-// less confident one the event fits its own plane. By default every kept match passes its lifetime.
-TEST(StereoEventMatcher_Confidence, only_a_match_confident_enough_passes_its_lifetime)
+// Every event keeps its best disparity, noise included. COUPLED passes a match's lifetime on at once only
+// when the match is confident; after a less confident one the event's own plane says whether it is noise
+// (then it gets no lifetime), and otherwise it takes the match's lifetime. Judged by the simulator's noise
+// labels: among the uncertain matches, those the plane calls noise are far more often noise than the rest
+// (75.7 against 1.9 %), and more of the noise is found than when every match passes its lifetime.
+TEST(StereoEventMatcher_Confidence, an_uncertain_match_passes_its_lifetime_only_when_its_plane_is_no_noise)
 {
-    const float threshold = 0.5f;
-    const SceneRun gated = runScene("boxes", 400, [&](StereoEventMatcher& m) { m.setMatchedLifetimeConfidence(threshold); });
-    const SceneRun every = runScene("boxes", 400, [](StereoEventMatcher& m) { EXPECT_EQ(m.getMatchedLifetimeConfidence(), 0.0); });
-    int64 gatedMatched = 0, gatedUncertainWithDisparity = 0, everyUncertainMatched = 0;
-    for (size_t i = 0; i < gated.flags.size(); i++)
+    const double threshold = 0.15;
+    const SceneRun checked = runScene("boxes", 400, [&](StereoEventMatcher& m) {
+        EXPECT_EQ(m.getMatchedLifetimeConfidence(), threshold);
+    });
+    const SceneRun copied = runScene("boxes", 400, [](StereoEventMatcher& m) { m.setMatchedLifetimeConfidence(0); });
+    int64 calledNoise = 0, calledNoiseTrue = 0, passed = 0, passedTrue = 0;
+    for (size_t i = 0; i < checked.flags.size(); i++)
     {
-        const int f = gated.flags[i];
-        if (f & STEREO_LIFETIME_MATCHED)
+        const int f = checked.flags[i];
+        if (!(f & STEREO_HAS_DISPARITY) || checked.confidence[i] >= threshold)
+            continue;
+        const bool noise = (checked.truthFlags[i] & GT_FLAG_NOISE) != 0;
+        if (f & STEREO_NOISE)
         {
-            gatedMatched++;
-            EXPECT_GE(gated.confidence[i], threshold) << "event " << i;
+            calledNoise++;
+            calledNoiseTrue += noise;
+            EXPECT_FALSE(f & STEREO_HAS_LIFETIME) << "event " << i;
         }
-        gatedUncertainWithDisparity += (f & STEREO_HAS_DISPARITY) && gated.confidence[i] < threshold;
+        else if (f & STEREO_LIFETIME_MATCHED)
+        {
+            passed++;
+            passedTrue += noise;
+        }
     }
-    for (size_t i = 0; i < every.flags.size(); i++)
-        everyUncertainMatched += (every.flags[i] & STEREO_LIFETIME_MATCHED) && every.confidence[i] < threshold;
-    std::cout << "boxes: " << gatedMatched << " matched lifetimes at threshold " << threshold << "; "
-              << "by default " << everyUncertainMatched << " below it" << std::endl;
-    EXPECT_GT(gatedMatched, 1000);
-    EXPECT_GT(gatedUncertainWithDisparity, 100);  // the gate had uncertain matches to turn away
-    EXPECT_GT(everyUncertainMatched, 100);
+    // The noise the simulator made, found (flagged STEREO_NOISE): at 0 an uncertain match passes its lifetime
+    // like any other, and noise that found a candidate keeps a lifetime.
+    auto noiseRecall = [](const SceneRun& r) {
+        int64 noise = 0, found = 0;
+        for (size_t i = 0; i < r.flags.size(); i++)
+            if (r.truthFlags[i] & GT_FLAG_NOISE)
+            {
+                noise++;
+                found += (r.flags[i] & STEREO_NOISE) != 0;
+            }
+        return 100.0 * (double)found / (double)std::max<int64>(1, noise);
+    };
+    const double noiseShareCalled = 100.0 * (double)calledNoiseTrue / (double)std::max<int64>(1, calledNoise);
+    const double noiseSharePassed = 100.0 * (double)passedTrue / (double)std::max<int64>(1, passed);
+    std::cout << "boxes, matches below confidence " << threshold << ": " << calledNoise << " called noise ("
+              << noiseShareCalled << " % noise), " << passed << " with the match's lifetime (" << noiseSharePassed
+              << " % noise); noise found: " << noiseRecall(checked) << " % (at 0: " << noiseRecall(copied) << " %)"
+              << std::endl;
+    EXPECT_GT(calledNoise, 100);
+    EXPECT_GT(passed, 100);
+    EXPECT_GT(noiseShareCalled, noiseSharePassed + 30);
+    EXPECT_GT(noiseRecall(checked), noiseRecall(copied) + 15);  // measured: 93.4 against 70.6 %
 }
 
 // The sparse boxes scene (plain wall, few edges, a row-parallel top and bottom on each box): matching that

@@ -7,6 +7,7 @@
 
 #include "opencv2/event/lifetime_estimator.hpp"
 
+#include <utility>
 #include <vector>
 
 namespace cv {
@@ -31,6 +32,11 @@ struct LifetimeScratch
 rows are more than lifetimeRowReach() apart touch disjoint state, so StereoEventMatcher's row bands make them
 from several threads at once. The estimator must come from LifetimeEstimator::create. (Internal.) */
 float processEventInRows(LifetimeEstimator& estimator, const Event& e, Vec2f& flow, int& status, LifetimeScratch& scratch);
+/** processEventInRows for an event matched with little confidence: its plane fit decides whether it is noise;
+if it is not, it takes `matched` (the lifetime and flow of its match) instead of its plane's, counted as
+LIFETIME_MATCHED. */
+float processMatchedEventInRows(LifetimeEstimator& estimator, const Event& e, const std::pair<float, Vec2f>& matched,
+                                Vec2f& flow, int& status, LifetimeScratch& scratch);
 void insertEventInRows(LifetimeEstimator& estimator, const Event& e, float lifetime, const Vec2f& flow,
                        LifetimeScratch& scratch);
 /** Adds the scratch's status counts to the estimator's (getStatusCount) and clears them. */

@@ -69,40 +69,15 @@ public:
 
     float processEvent(const Event& e, Vec2f& flow, int& status, LifetimeScratch& scratch)
     {
-        checkInside(e);
-        const int p = e.p ? 1 : 0;
-        const size_t idx = index(e.x, e.y, p);
-        double a = 0, b = 0;
-        status = LIFETIME_NOISE;
-        Prediction& pred = predictions_[idx];
-        if (usePrediction_ && pred.valid && std::abs(timeDifference(e.t, pred.t)) <= predictionTolerance_)
-        {
-            a = pred.a;
-            b = pred.b;
-            status = LIFETIME_PREDICTED;
-        }
-        else if (fit(e, p, pred, scratch.points, a, b))
-            status = LIFETIME_FITTED;
-        pred.valid = false;  // consumed (or stale)
-        surface_[idx] = e.t;
+        return estimate(e, nullptr, flow, status, scratch);
+    }
 
-        float lifetime = 0;
-        flow = Vec2f(0, 0);
-        const double g2 = a * a + b * b;
-        if (status != LIFETIME_NOISE && g2 > 1e-12)
-        {
-            lifetime = (float)(1000.0 * std::sqrt(g2));  // |g| ms -> us
-            flow = Vec2f((float)(1000.0 * a / g2), (float)(1000.0 * b / g2));  // g / |g|^2 px/ms -> px/s
-            predictNeighbour(e, p, a, b);
-        }
-        else
-            status = LIFETIME_NOISE;
-        scratch.counts[status]++;
-        Active& act = active_[(size_t)e.y * size_.width + e.x];
-        act.t = e.t;
-        act.lifetime = lifetime;
-        act.p = (uchar)p;
-        return lifetime;
+    // processEvent, except that an event whose plane says it is not noise takes `matched` (its lifetime and
+    // flow from a stereo match) instead of its own plane's, counted as LIFETIME_MATCHED.
+    float processMatchedEvent(const Event& e, const std::pair<float, Vec2f>& matched, Vec2f& flow, int& status,
+                              LifetimeScratch& scratch)
+    {
+        return estimate(e, &matched, flow, status, scratch);
     }
 
     void insertEvent(const Event& e, float lifetime, const Vec2f& flow) CV_OVERRIDE
@@ -117,13 +92,7 @@ public:
         const size_t idx = index(e.x, e.y, p);
         predictions_[idx].valid = false;
         surface_[idx] = e.t;
-        const double v2 = (double)flow[0] * flow[0] + (double)flow[1] * flow[1];
-        if (lifetime > 0 && v2 > 0)
-        {
-            // Gradient g = v / |v|^2, with v in px/ms: the plane that produced this flow.
-            const double vx = flow[0] * 1e-3, vy = flow[1] * 1e-3, v2ms = v2 * 1e-6;
-            predictNeighbour(e, p, vx / v2ms, vy / v2ms);
-        }
+        predictFromFlow(e, p, lifetime, flow);
         scratch.counts[LIFETIME_MATCHED]++;
         Active& act = active_[(size_t)e.y * size_.width + e.x];
         act.t = e.t;
@@ -249,6 +218,51 @@ public:
     String getDefaultName() const CV_OVERRIDE { return "LifetimeEstimator"; }
 
 private:
+    float estimate(const Event& e, const std::pair<float, Vec2f>* matched, Vec2f& flow, int& status, LifetimeScratch& scratch)
+    {
+        checkInside(e);
+        const int p = e.p ? 1 : 0;
+        const size_t idx = index(e.x, e.y, p);
+        double a = 0, b = 0;
+        status = LIFETIME_NOISE;
+        Prediction& pred = predictions_[idx];
+        if (usePrediction_ && pred.valid && std::abs(timeDifference(e.t, pred.t)) <= predictionTolerance_)
+        {
+            a = pred.a;
+            b = pred.b;
+            status = LIFETIME_PREDICTED;
+        }
+        else if (fit(e, p, pred, scratch.points, a, b))
+            status = LIFETIME_FITTED;
+        pred.valid = false;  // consumed (or stale)
+        surface_[idx] = e.t;
+
+        float lifetime = 0;
+        flow = Vec2f(0, 0);
+        const double g2 = a * a + b * b;
+        if (status != LIFETIME_NOISE && g2 > 1e-12 && matched)
+        {
+            lifetime = matched->first;
+            flow = matched->second;
+            status = LIFETIME_MATCHED;
+            predictFromFlow(e, p, lifetime, flow);
+        }
+        else if (status != LIFETIME_NOISE && g2 > 1e-12)
+        {
+            lifetime = (float)(1000.0 * std::sqrt(g2));  // |g| ms -> us
+            flow = Vec2f((float)(1000.0 * a / g2), (float)(1000.0 * b / g2));  // g / |g|^2 px/ms -> px/s
+            predictNeighbour(e, p, a, b);
+        }
+        else
+            status = LIFETIME_NOISE;
+        scratch.counts[status]++;
+        Active& act = active_[(size_t)e.y * size_.width + e.x];
+        act.t = e.t;
+        act.lifetime = lifetime;
+        act.p = (uchar)p;
+        return lifetime;
+    }
+
     struct Active
     {
         int64 t = 0;
@@ -374,6 +388,18 @@ private:
     }
 
     // Stores the plane at the 8-neighbour the edge moves to, with the time it should get there.
+    // The neighbour's prediction from a lifetime and flow obtained elsewhere (a stereo match).
+    void predictFromFlow(const Event& e, int p, float lifetime, const Vec2f& flow)
+    {
+        const double v2 = (double)flow[0] * flow[0] + (double)flow[1] * flow[1];
+        if (lifetime > 0 && v2 > 0)
+        {
+            // Gradient g = v / |v|^2, with v in px/ms: the plane that produced this flow.
+            const double vx = flow[0] * 1e-3, vy = flow[1] * 1e-3, v2ms = v2 * 1e-6;
+            predictNeighbour(e, p, vx / v2ms, vy / v2ms);
+        }
+    }
+
     void predictNeighbour(const Event& e, int p, double a, double b)
     {
         const double angle = std::atan2(b, a);  // the direction of motion: along the gradient
@@ -418,6 +444,12 @@ private:
 float processEventInRows(LifetimeEstimator& estimator, const Event& e, Vec2f& flow, int& status, LifetimeScratch& scratch)
 {
     return static_cast<LifetimeEstimatorImpl&>(estimator).processEvent(e, flow, status, scratch);
+}
+
+float processMatchedEventInRows(LifetimeEstimator& estimator, const Event& e, const std::pair<float, Vec2f>& matched,
+                                Vec2f& flow, int& status, LifetimeScratch& scratch)
+{
+    return static_cast<LifetimeEstimatorImpl&>(estimator).processMatchedEvent(e, matched, flow, status, scratch);
 }
 
 void insertEventInRows(LifetimeEstimator& estimator, const Event& e, float lifetime, const Vec2f& flow,

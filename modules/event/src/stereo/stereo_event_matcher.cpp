@@ -170,13 +170,24 @@ void StereoEventMatcherImpl::processAdmitted(const Event& e, Point r, int64 cold
     if (mode_ == STEREO_COUPLED)
     {
         const LifetimeTimer timer(timeLifetimes_, s.lifetimeTicks);
-        // An uncertain match's window may be another edge's: above 0, matchedLifetimeConfidence_ lets such an
-        // event fit its own plane instead.
-        if (est.disparity >= 0 && m.counterpartX >= 0 && m.confidence >= matchedLifetimeConfidence_
-            && matchedLifetime(1 - c, m.counterpartX, r.y, p, s, est.lifetime, est.flow))
+        std::pair<float, Vec2f> matched;
+        if (est.disparity >= 0 && m.counterpartX >= 0
+            && matchedLifetime(1 - c, m.counterpartX, r.y, p, s, matched.first, matched.second))
         {
-            insertEventInRows(estimator, re, est.lifetime, est.flow, s.lifetimes[c]);
-            status = LIFETIME_MATCHED;
+            if (m.confidence >= matchedLifetimeConfidence_)
+            {
+                est.lifetime = matched.first;
+                est.flow = matched.second;
+                insertEventInRows(estimator, re, est.lifetime, est.flow, s.lifetimes[c]);
+                status = LIFETIME_MATCHED;
+            }
+            else
+            {
+                // Every event keeps its best disparity, noise included, and noise finds some candidate: below
+                // matchedLifetimeConfidence_ the event's own plane says whether it is noise before it takes
+                // the match's lifetime.
+                est.lifetime = processMatchedEventInRows(estimator, re, matched, est.flow, status, s.lifetimes[c]);
+            }
         }
         else
             est.lifetime = processEventInRows(estimator, re, est.flow, status, s.lifetimes[c]);

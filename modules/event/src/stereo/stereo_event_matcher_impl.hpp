@@ -278,7 +278,7 @@ private:
     int uniquenessRatio_ = 15;
     int64 fixedInterval_ = 10000, frameWindow_ = 33000, maxLifetime_ = 100000;
     double activeDistance_ = 2.5;
-    double minConfidence_ = 0, matchedLifetimeConfidence_ = 0;
+    double minConfidence_ = 0, matchedLifetimeConfidence_ = 0.15;
     int priorTolerance_ = 30;
     int64 lookAhead_ = 10000;
     StereoCalibration calibration_;

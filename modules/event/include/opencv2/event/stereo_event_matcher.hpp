@@ -112,10 +112,11 @@ not matched, and in COUPLED its lifetime comes from its own plane fit. Its estim
 neighbours in turn, so that an object's disparity reaches the image's edge from the part both cameras see.
 
 **Modes** (StereoMatchMode), all with the same outputs:
-- COUPLED: the event is matched first; on a match (whose confidence reaches getMatchedLifetimeConfidence(),
-  by default any) its lifetime is the median lifetime of the active events of its polarity in the other
-  sensor's window of getLifetimeWindow() (9) around the counterpart, and its plane is not fitted; otherwise
-  the LifetimeEstimator of its sensor fits one (or classifies it as noise).
+- COUPLED: the event is matched first; on a match its lifetime is the median lifetime of the active events
+  of its polarity in the other sensor's window of getLifetimeWindow() (9) around the counterpart, and its
+  plane is not fitted; otherwise the LifetimeEstimator of its sensor fits one (or classifies it as noise).
+  After a match less confident than getMatchedLifetimeConfidence() the plane is fitted as well, and the
+  event takes the match's lifetime only when its plane says it is not noise.
 - DECOUPLED: the LifetimeEstimator runs for every event, then the event is matched.
 - FIXED_INTERVAL: every event is active for getFixedInterval() microseconds; no lifetimes.
 - FRAME_SGBM: per time window (getFrameWindow(), aligned to multiples of it), each sensor's events are
@@ -220,8 +221,10 @@ public:
     CV_WRAP virtual double getMinConfidence() const = 0;
     CV_WRAP virtual void setMinConfidence(double confidence) = 0;
     /** @brief COUPLED: the confidence a match needs for the event to take its lifetime from the other
-    sensor's window around the counterpart (0..1, default 0: every kept match does); after a less confident
-    one the event fits its own plane. Raising it gives fewer events a lifetime, more of them accurate. */
+    sensor's window around the counterpart at once (0..1, default 0.15). After a less confident one the
+    event's own plane fit decides whether it is noise, and only if it is not does it take the match's
+    lifetime: every event keeps its best disparity, and noise finds some candidate. 0: every match passes its
+    lifetime on (more lifetimes, less noise found). */
     CV_WRAP virtual double getMatchedLifetimeConfidence() const = 0;
     CV_WRAP virtual void setMatchedLifetimeConfidence(double confidence) = 0;
     /** @brief Temporal prior: how much more [%] than the best the cost of the candidate at the prior may be
