@@ -218,7 +218,9 @@ public:
     String getDefaultName() const CV_OVERRIDE { return "LifetimeEstimator"; }
 
 private:
-    float estimate(const Event& e, const std::pair<float, Vec2f>* matched, Vec2f& flow, int& status, LifetimeScratch& scratch)
+    // processEvent(), or processMatchedEvent() when `matched` is given.
+    float estimate(const Event& e, const std::pair<float, Vec2f>* matched, Vec2f& flow, int& status,
+                   LifetimeScratch& scratch)
     {
         checkInside(e);
         const int p = e.p ? 1 : 0;
@@ -240,14 +242,15 @@ private:
         float lifetime = 0;
         flow = Vec2f(0, 0);
         const double g2 = a * a + b * b;
-        if (status != LIFETIME_NOISE && g2 > 1e-12 && matched)
+        const bool plane = status != LIFETIME_NOISE && g2 > 1e-12;
+        if (plane && matched)
         {
             lifetime = matched->first;
             flow = matched->second;
             status = LIFETIME_MATCHED;
             predictFromFlow(e, p, lifetime, flow);
         }
-        else if (status != LIFETIME_NOISE && g2 > 1e-12)
+        else if (plane)
         {
             lifetime = (float)(1000.0 * std::sqrt(g2));  // |g| ms -> us
             flow = Vec2f((float)(1000.0 * a / g2), (float)(1000.0 * b / g2));  // g / |g|^2 px/ms -> px/s
@@ -387,7 +390,6 @@ private:
         return true;
     }
 
-    // Stores the plane at the 8-neighbour the edge moves to, with the time it should get there.
     // The neighbour's prediction from a lifetime and flow obtained elsewhere (a stereo match).
     void predictFromFlow(const Event& e, int p, float lifetime, const Vec2f& flow)
     {
@@ -400,6 +402,7 @@ private:
         }
     }
 
+    // Stores the plane at the 8-neighbour the edge moves to, with the time it should get there.
     void predictNeighbour(const Event& e, int p, double a, double b)
     {
         const double angle = std::atan2(b, a);  // the direction of motion: along the gradient
