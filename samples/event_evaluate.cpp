@@ -8,7 +8,8 @@
 // writeSimulatedRecording() writes (`t,x,y,p,camera,depth,disparity,flow_x,flow_y,lifetime,flags`).
 // Methods: the StereoEventMatcher modes (`sgbm` = what users do today, dv-processing's semi-dense matcher:
 // edge frames per window + cv::StereoSGBM), with --set for matcher parameters (FileStorage names, e.g.
-// --set=uniquenessRatio=20,costWindow=7); `lifetime` = LifetimeEstimator per camera (lifetime and noise metrics, no disparity).
+// --set=uniquenessRatio=20,costWindow=7, lifetimeEstimator.inlierDistance=0 for its lifetime estimator);
+// `lifetime` = LifetimeEstimator per camera (lifetime and noise metrics, no disparity; --set takes its names).
 //
 // Writes DIR/report.md and DIR/metrics.csv (disparity density, share within 1 px, matching rate (left signal
 // events within 1 px of the truth over all left signal events) and where the other left signal events went,
@@ -240,7 +241,12 @@ private:
 class Lifetime CV_FINAL : public Method
 {
 public:
-    explicit Lifetime(Size size) : est_{ LifetimeEstimator::create(size), LifetimeEstimator::create(size) } {}
+    Lifetime(Size size, const std::string& settings)
+        : est_{ LifetimeEstimator::create(size), LifetimeEstimator::create(size) }
+    {
+        for (const Ptr<LifetimeEstimator>& est : est_)
+            applyAlgorithmSettings(est, settings, "--set", "lifetime estimator");
+    }
 
     void process(const std::vector<Event>& window, MethodOutput& out) CV_OVERRIDE
     {
@@ -359,7 +365,7 @@ const char* const keys =
     "{filter-set  |            | filter parameters NAME=VALUE, comma separated (FileStorage names, e.g. correlationTime=5000)}"
     "{window-ms   | 33         | evaluation window (and SGBM frame) [ms]}"
     "{output      | evaluation | output folder}"
-    "{set         |            | matcher parameters NAME=VALUE, comma separated (FileStorage names, e.g. uniquenessRatio=20)}"
+    "{set         |            | method parameters NAME=VALUE, comma separated (FileStorage names, e.g. uniquenessRatio=20; the matcher's lifetime estimator as lifetimeEstimator.NAME, e.g. lifetimeEstimator.inlierDistance=0; with --method=lifetime the estimator's own names)}"
     "{sensor-set  |            | simulator settings NAME=VALUE, comma separated (SimulatorSettings fields, e.g. jitterUs=300)}";
 
 // --sensor-set: the numeric SimulatorSettings fields by name.
@@ -448,9 +454,13 @@ int main(int argc, char** argv)
         MethodOutput keptEstimate;
         Mat filterPicture;
         if (o.method == "none")
+        {
+            if (!o.settings.empty())
+                throw std::runtime_error("--set: --method=none has no parameters (--filter-set sets the filter's)");
             method.reset(new NoEstimate());
+        }
         else if (o.method == "lifetime")
-            method.reset(new Lifetime(size));
+            method.reset(new Lifetime(size, o.settings));
         else
             method.reset(new Matcher(size, findStereoMode(o.method), o.windowMs * 1000, o.settings));
         MethodOutput estimate;

@@ -2,7 +2,7 @@
 // active events next to the fixed-interval accumulation people use today.
 //
 //   event_lifetime [FILE | --scene=NAME] [--camera=0|1] [--frame-ms=10] [--every-ms=50] [--csv=FILE]
-//                  [--output=DIR] [--sensor=WxH|NAME] [--no-prediction] [--max-ms=T]
+//                  [--output=DIR] [--sensor=WxH|NAME] [--no-prediction] [--max-ms=T] [--set=NAME=VALUE,...]
 //
 // Pictures DIR/active_NNNNN.png: left, the events alive at that instant (each lives from its timestamp for
 // its lifetime: the sharp edge image); right, all events of the last --frame-ms (the fixed window).
@@ -14,6 +14,7 @@
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
+#include "sample_algorithm_settings.hpp"
 #include "sample_command_line.hpp"
 #include "sample_progress.hpp"
 
@@ -37,7 +38,8 @@ const char* const keys =
     "{csv           |                 | write every event with its lifetime and flow to this file}"
     "{output        | lifetime_output | output folder}"
     "{sensor        |                 | sensor size WxH or a name (DVS128, DAVIS240, DAVIS346) when the format has none}"
-    "{no-prediction | false           | fit a plane for every event (no prediction shortcut)}";
+    "{no-prediction | false           | fit a plane for every event (no prediction shortcut)}"
+    "{set           |                 | estimator parameters NAME=VALUE, comma separated (FileStorage names, e.g. inlierDistance=0,windowSize=7)}";
 
 }  // namespace
 
@@ -77,6 +79,7 @@ int main(int argc, char** argv)
             throw std::runtime_error(input + ": the format does not give the sensor size; pass --sensor=WxH");
         Ptr<LifetimeEstimator> est = LifetimeEstimator::create(size);
         est->setUsePrediction(prediction);
+        applyAlgorithmSettings(est, cmd.get<std::string>("set"), "--set", "lifetime estimator");
         std::FILE* csv = nullptr;
         if (!csvPath.empty())
         {

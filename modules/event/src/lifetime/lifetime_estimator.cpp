@@ -161,6 +161,13 @@ public:
     void setTimeWindow(double us) CV_OVERRIDE { timeWindow_ = positive(us, "time window"); }
     double getInlierThreshold() const CV_OVERRIDE { return inlierThreshold_; }
     void setInlierThreshold(double ms) CV_OVERRIDE { inlierThreshold_ = positive(ms, "inlier threshold"); }
+    double getInlierDistance() const CV_OVERRIDE { return inlierDistance_; }
+    void setInlierDistance(double px) CV_OVERRIDE
+    {
+        if (!(px >= 0) || !std::isfinite(px))
+            CV_Error_(Error::StsBadArg, ("LifetimeEstimator: inlierDistance %g px; must be >= 0 (0: off)", px));
+        inlierDistance_ = px;
+    }
     int getMinInliers() const CV_OVERRIDE { return minInliers_; }
     void setMinInliers(int n) CV_OVERRIDE
     {
@@ -193,7 +200,8 @@ public:
     {
         writeFormat(fs);
         fs << "sensorWidth" << size_.width << "sensorHeight" << size_.height << "windowSize" << window_
-           << "timeWindow" << timeWindow_ << "inlierThreshold" << inlierThreshold_ << "minInliers" << minInliers_
+           << "timeWindow" << timeWindow_ << "inlierThreshold" << inlierThreshold_ << "inlierDistance" << inlierDistance_
+           << "minInliers" << minInliers_
            << "maxIterations" << maxIterations_ << "regularization" << lambda_
            << "predictionTolerance" << predictionTolerance_ << "usePrediction" << (int)usePrediction_ << "seed" << seed_;
     }
@@ -205,6 +213,7 @@ public:
         setWindowSize((int)num("windowSize", window_));
         setTimeWindow(num("timeWindow", timeWindow_));
         setInlierThreshold(num("inlierThreshold", inlierThreshold_));
+        setInlierDistance(num("inlierDistance", inlierDistance_));
         setMinInliers((int)num("minInliers", minInliers_));
         setMaxIterations((int)num("maxIterations", maxIterations_));
         setRegularization(num("regularization", lambda_));
@@ -303,6 +312,15 @@ private:
         return z ? z : 1;
     }
 
+    // A hypothesis' inlier threshold [ms]: inlierDistance pixels in its own time per pixel, at most
+    // inlierThreshold. A fixed threshold spans several pixels of a fast edge (2 ms is 7 px at 0.3 ms/px), so
+    // planes through stale points of earlier edges then collect as many inliers as the true one.
+    double inlierThreshold(double a, double b) const
+    {
+        return inlierDistance_ > 0 ? std::min(inlierThreshold_, inlierDistance_ * std::sqrt(a * a + b * b))
+                                   : inlierThreshold_;
+    }
+
     // RANSAC + refit. On success, (a, b) is the time-surface gradient [ms/px].
     bool fit(const Event& e, int p, const Prediction& pred, std::vector<SurfacePoint>& points, double& a, double& b)
     {
@@ -334,7 +352,7 @@ private:
         // results whatever the order of calls for events in distant rows (StereoEventMatcher's row bands).
         RNG rng(sampleSeed(e, p));
         int bestCount = 0;
-        double bestA = 0, bestB = 0;
+        double bestA = 0, bestB = 0, bestThreshold = inlierThreshold_;
         for (int it = 0; it < maxIterations_; it++)
         {
             const int i = rng.uniform(0, m);
@@ -349,12 +367,14 @@ private:
                 continue;  // collinear with the current event: degenerate
             const double ha = (p1.t * p2.y - p2.t * p1.y) / det;
             const double hb = (p1.x * p2.t - p2.x * p1.t) / det;
+            const double threshold = inlierThreshold(ha, hb);
             int count = 1;  // the current event lies on every hypothesis
             for (const SurfacePoint& q : points)
-                count += std::abs(ha * q.x + hb * q.y - q.t) <= inlierThreshold_;
+                count += std::abs(ha * q.x + hb * q.y - q.t) <= threshold;
             if (count > bestCount)
             {
                 bestCount = count;
+                bestThreshold = threshold;
                 bestA = ha;
                 bestB = hb;
             }
@@ -373,7 +393,7 @@ private:
         };
         add(0, 0, 0);
         for (const SurfacePoint& q : points)
-            if (std::abs(bestA * q.x + bestB * q.y - q.t) <= inlierThreshold_)
+            if (std::abs(bestA * q.x + bestB * q.y - q.t) <= bestThreshold)
                 add(q.x, q.y, q.t);
         if (pred.valid && lambda_ > 0)
         {
@@ -430,6 +450,7 @@ private:
     int window_ = 5;
     double timeWindow_ = 100000;
     double inlierThreshold_ = 2.0;
+    double inlierDistance_ = 0.75;
     int minInliers_ = 5;
     int maxIterations_ = 19;
     double lambda_ = 1.0;

@@ -28,7 +28,8 @@ enum LifetimeStatus
 For each event, the past events of its polarity in an N x N window no older than dt are taken in local
 coordinates (x, y relative to the event, t relative to the event in ms). RANSAC hypotheses are planes
 t = a x + b y through the current event and two random past events (degenerate pairs are skipped); inliers
-lie within the inlier threshold of the plane in time; the best hypothesis is accepted with at least
+lie within the inlier distance of the edge position the plane gives them (in pixels, so in time the
+threshold is that distance times the plane's time per pixel), and within the inlier threshold [ms]; the best hypothesis is accepted with at least
 minInliers inliers, and refitted by least squares on its inliers (t = a x + b y + c), regularised toward
 the plane predicted for this pixel when there is one. No accepted plane within the iteration cap: noise.
 
@@ -83,9 +84,16 @@ public:
     /** @brief Oldest past event used [us] (default 100000, the paper's 100 ms). */
     CV_WRAP virtual double getTimeWindow() const = 0;
     CV_WRAP virtual void setTimeWindow(double us) = 0;
-    /** @brief RANSAC inlier threshold: distance to the plane in time [ms] (default 2). */
+    /** @brief RANSAC inlier threshold: distance to the plane in time [ms] (default 2). It caps the
+    threshold that inlierDistance gives a hypothesis. */
     CV_WRAP virtual double getInlierThreshold() const = 0;
     CV_WRAP virtual void setInlierThreshold(double ms) = 0;
+    /** @brief RANSAC inlier distance in pixels (default 0.75): a past event is an inlier of a hypothesis
+    when it lies within this distance of the edge position that hypothesis gives it, that is within
+    inlierDistance x |g| ms of the plane in time, |g| being the hypothesis' time per pixel, and at most
+    inlierThreshold. Fast edges then get a threshold to their scale. 0: the fixed inlierThreshold alone. */
+    CV_WRAP virtual double getInlierDistance() const = 0;
+    CV_WRAP virtual void setInlierDistance(double px) = 0;
     /** @brief Inliers (the current event included) needed to accept a plane (default 5). */
     CV_WRAP virtual int getMinInliers() const = 0;
     CV_WRAP virtual void setMinInliers(int n) = 0;
