@@ -347,7 +347,11 @@ TEST(Event_Lifetime, active_events_image_and_parameters_round_trip)
 
     est->setWindowSize(7);
     est->setInlierThreshold(1.5);
+    est->setInlierDistance(0.5);
     est->setUsePrediction(false);
+    EXPECT_THROW(est->setInlierDistance(-0.1), cv::Exception);
+    EXPECT_THROW(est->setInlierDistance(std::numeric_limits<double>::quiet_NaN()), cv::Exception);
+    EXPECT_EQ(0.5, est->getInlierDistance());  // a rejected value leaves the parameter as it was
     FileStorage fs("lifetime.yml", FileStorage::WRITE | FileStorage::MEMORY);
     est->write(fs);
     FileStorage in(fs.releaseAndGetString(), FileStorage::READ | FileStorage::MEMORY);
@@ -356,6 +360,7 @@ TEST(Event_Lifetime, active_events_image_and_parameters_round_trip)
     EXPECT_EQ(Size(24, 24), back->getSensorSize());
     EXPECT_EQ(7, back->getWindowSize());
     EXPECT_EQ(1.5, back->getInlierThreshold());
+    EXPECT_EQ(0.5, back->getInlierDistance());
     EXPECT_FALSE(back->getUsePrediction());
 }
 
