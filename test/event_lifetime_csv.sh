@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # ctest `event_lifetime_sample`: the event_lifetime sample on the simulated moving line (75 px/s: the line is
 # 0.45 m/s at 1.2 m seen with f = 200 px) writes one CSV row per event whose median lifetime is the closed-form
-# 1 / 75 s = 13333 us (within 10 %), and pictures.
+# 1 / 75 s = 13333 us (within 10 %), and pictures; its lifetime check (the edge reaching the next pixel after
+# one lifetime) prints a median within 15 % of 1.
 set -euo pipefail
 sample=$1
 work=$2
@@ -14,4 +15,8 @@ median=$(awk -F, 'NR > 1 && $8 != 0 { print $5 }' "$work/events.csv" | sort -n |
 awk -v m="$median" 'BEGIN { e = (m - 13333.3) / 13333.3; if (e < -0.1 || e > 0.1) exit 1 }' \
   || { echo "median lifetime $median us, expected 13333 us +/- 10 %"; exit 1; }
 ls "$work"/active_*.png > /dev/null || { echo "no pictures"; exit 1; }
-echo "event_lifetime: $rows events, median lifetime $median us (expected 13333)"
+check=$(sed -n 's/^lifetime check: the edge reached the next pixel after \([0-9.]*\) lifetimes.*/\1/p' "$work/stdout.txt")
+[ -n "$check" ] || { echo "no lifetime check printed"; cat "$work/stdout.txt"; exit 1; }
+awk -v c="$check" 'BEGIN { if (c < 0.85 || c > 1.15) exit 1 }' \
+  || { echo "lifetime check median $check, expected 1 +/- 15 %"; exit 1; }
+echo "event_lifetime: $rows events, median lifetime $median us (expected 13333), lifetime check $check (expected 1)"

@@ -123,4 +123,21 @@ assert flicker.sum() > 10000 and motion.sum() > 1000, (flicker.sum(), motion.sum
 kept, mask = ev.AntiFlickerFilter_create(tuple(sim.getSensorSize())).filter(events)
 kept_mask = mask.ravel() != 0
 assert (~kept_mask & flicker).sum() > 0.6 * flicker.sum() and (kept_mask & motion).sum() >= 0.99 * motion.sum()
+# LifetimeEstimator and LifetimeArrivalCheck: an edge sliding right at 100 px/s (10 ms per pixel) over a
+# 16 x 8 sensor, pixel (x, y) firing at 1 ms + 10 ms x. Its lifetimes are 10 ms, and the check finds the
+# edge reaching the next pixel after one of them; inlierDistance goes through the bindings.
+xs, ys = np.meshgrid(np.arange(16, dtype=np.int32), np.arange(8, dtype=np.int32))
+order = np.argsort(xs.ravel(), kind="stable")
+edge = ev.packEvents((1000.0 + 10000.0 * xs.ravel()[order]), xs.ravel()[order], ys.ravel()[order],
+                     np.ones(128, np.int32))
+estimator = ev.LifetimeEstimator_create((16, 8))
+estimator.setInlierDistance(0.5)
+assert estimator.getInlierDistance() == 0.5
+lifetimes, flow, status = estimator.process(edge)
+assert lifetimes.shape == (128, 1) and flow.shape == (128, 2)
+fitted = lifetimes.ravel() > 0
+assert fitted.sum() > 60 and np.allclose(lifetimes.ravel()[fitted], 10000.0, rtol=0.02), lifetimes.ravel()
+check = ev.LifetimeArrivalCheck_create((16, 8))
+check.update(edge, lifetimes, flow)
+assert check.getSampleCount() > 50 and abs(check.getRatioQuantile(0.5) - 1.0) < 0.02, check.getRatioQuantile(0.5)
 print("python bindings: cv2.event OK")

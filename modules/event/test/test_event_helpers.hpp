@@ -2,7 +2,7 @@
 // It is subject to the license terms in the LICENSE file found in the top-level directory
 // of this distribution and at http://opencv.org/license.html.
 
-// Helpers of opencv_test_event: reading a capture whole, writing fixture files.
+// Helpers of opencv_test_event: reading a capture whole, writing fixture files, a synthetic moving edge.
 
 #ifndef OPENCV_EVENT_TEST_EVENT_HELPERS_HPP
 #define OPENCV_EVENT_TEST_EVENT_HELPERS_HPP
@@ -10,6 +10,8 @@
 #include "opencv2/ts.hpp"
 #include "opencv2/event.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <fstream>
 #include <string>
 #include <vector>
@@ -35,6 +37,34 @@ inline std::string writeTempFile(const std::string& content, const std::string& 
     out.write(content.data(), (std::streamsize)content.size());
     return path;
 }
+
+/** A straight edge moving at `speed` px/s in direction `angle`: pixel (x, y) fires when the edge line
+reaches it, t = (x cos + y sin) / speed, with Gaussian timing jitter (a fraction of the per-pixel time)
+and, at a share of the pixels, an outlier firing at a random time instead. */
+inline std::vector<cv::event::Event> movingEdge(cv::Size size, double speed, double angle, double jitter,
+                                               double outliers, uint64 seed)
+{
+    cv::RNG rng(seed);
+    const double c = std::cos(angle), s = std::sin(angle);
+    const double pixelTime = 1e6 / speed;  // us per pixel
+    double tMin = 1e18;
+    std::vector<cv::event::Event> ev;
+    for (int y = 0; y < size.height; y++)
+        for (int x = 0; x < size.width; x++)
+        {
+            double t = (x * c + y * s) * pixelTime + rng.gaussian(jitter * pixelTime);
+            if (rng.uniform(0.0, 1.0) < outliers)
+                t += rng.uniform(-3.0, 3.0) * pixelTime;
+            tMin = std::min(tMin, t);
+            ev.push_back(cv::event::Event((int64)std::llround(t), x, y, cv::event::POLARITY_ON));
+        }
+    for (cv::event::Event& e : ev)
+        e.t -= (int64)std::floor(tMin) - 1000;
+    std::stable_sort(ev.begin(), ev.end(),
+                     [](const cv::event::Event& a, const cv::event::Event& b) { return a.t < b.t; });
+    return ev;
+}
+
 }  // namespace opencv_test
 
 #endif  // OPENCV_EVENT_TEST_EVENT_HELPERS_HPP

@@ -6,31 +6,6 @@
 
 namespace opencv_test { namespace {
 
-// A straight edge moving at `speed` px/s in direction `angle`: pixel (x, y) fires when the edge line
-// reaches it, t = (x cos + y sin) / speed, with Gaussian timing jitter (a fraction of the per-pixel time)
-// and, at a share of the pixels, an outlier firing at a random time instead.
-std::vector<Event> movingEdge(Size size, double speed, double angle, double jitter, double outliers, uint64 seed)
-{
-    RNG rng(seed);
-    const double c = std::cos(angle), s = std::sin(angle);
-    const double pixelTime = 1e6 / speed;  // us per pixel
-    double tMin = 1e18;
-    std::vector<Event> ev;
-    for (int y = 0; y < size.height; y++)
-        for (int x = 0; x < size.width; x++)
-        {
-            double t = (x * c + y * s) * pixelTime + rng.gaussian(jitter * pixelTime);
-            if (rng.uniform(0.0, 1.0) < outliers)
-                t += rng.uniform(-3.0, 3.0) * pixelTime;
-            tMin = std::min(tMin, t);
-            ev.push_back(Event((int64)std::llround(t), x, y, POLARITY_ON));
-        }
-    for (Event& e : ev)
-        e.t -= (int64)std::floor(tMin) - 1000;
-    std::stable_sort(ev.begin(), ev.end(), [](const Event& a, const Event& b) { return a.t < b.t; });
-    return ev;
-}
-
 struct EdgeResult
 {
     double medianLifetimeError, medianFlowError, withLifetime;

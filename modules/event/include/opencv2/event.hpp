@@ -13,6 +13,7 @@
 #include "opencv2/event/event_writer.hpp"
 #include "opencv2/event/simulator.hpp"
 #include "opencv2/event/lifetime_estimator.hpp"
+#include "opencv2/event/lifetime_arrival_check.hpp"
 #include "opencv2/event/stereo_calibration.hpp"
 #include "opencv2/event/stereo_event_matcher.hpp"
 
