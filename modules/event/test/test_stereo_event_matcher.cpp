@@ -223,6 +223,43 @@ TEST(StereoEventMatcher, coupled_beats_frame_sgbm_on_textured_scenes)
 
 // The paper's Figure 4: with a less sensitive right sensor, its events are too sparse for plane fits;
 // matched to the other sensor they still get a lifetime. COUPLED must give >= 20 % more of them one.
+// COUPLED's median relative lifetime error against the simulator's truth over the signal events with a
+// lifetime, on the walking figure (limbs swinging: their edges change speed all the time).
+static double coupledLifetimeError(int maxLifetimeCopies)
+{
+    Ptr<StereoEventSimulator> sim = StereoEventSimulator::create("walking");
+    Ptr<StereoEventMatcher> m = StereoEventMatcher::create(sim->getSensorSize(), STEREO_COUPLED);
+    m->setMaxLifetimeCopies(maxLifetimeCopies);
+    std::vector<double> errors;
+    std::vector<Event> ev;
+    Mat gt, disparity, lifetime;
+    for (double t = 20000; t <= 600000; t += 20000)
+    {
+        sim->generate(t, ev, gt);
+        m->process(ev, disparity, lifetime);
+        for (int i = 0; i < (int)ev.size(); i++)
+        {
+            const float truth = gt.at<float>(i, GT_LIFETIME), l = lifetime.at<float>(i);
+            if (l > 0 && truth > 0 && !((int)gt.at<float>(i, GT_FLAGS) & GT_FLAG_NOISE))
+                errors.push_back(std::abs(l - truth) / truth);
+        }
+    }
+    CV_Assert(errors.size() > 10000);
+    std::nth_element(errors.begin(), errors.begin() + errors.size() / 2, errors.end());
+    return errors[errors.size() / 2];
+}
+
+TEST(StereoEventMatcher, coupled_lifetimes_are_refitted_after_a_copy_on_changing_speeds)
+{
+    // Both sensors' matched events copy each other's lifetimes; without a limit a lifetime goes round while the
+    // limbs speed up and slow down. With the default (one copy) the events past it fit their own planes.
+    const double limited = coupledLifetimeError(1), unlimited = coupledLifetimeError(255);
+    std::cout << "walking, COUPLED median lifetime error: " << 100 * limited << " % (no limit on copies: "
+              << 100 * unlimited << " %)" << std::endl;
+    EXPECT_LT(limited, 0.2);
+    EXPECT_GT(unlimited, 0.3);
+}
+
 TEST(StereoEventMatcher, coupled_gives_the_weak_sensor_more_lifetimes_than_decoupled)
 {
     const Accuracy coupled = simulate("faint_line", STEREO_COUPLED, 297);
@@ -379,6 +416,7 @@ TEST(StereoEventMatcher, parameters_round_trip_through_FileStorage)
     a->setUniquenessRatio(30);
     a->setMinConfidence(0.4);
     a->setMatchedLifetimeConfidence(0.6);
+    a->setMaxLifetimeCopies(3);
     a->setPriorTolerance(55);
     a->setLookAhead(2500);
     a->setFixedInterval(5000);
@@ -394,6 +432,9 @@ TEST(StereoEventMatcher, parameters_round_trip_through_FileStorage)
     EXPECT_EQ(b->getSensorSize(), Size(128, 96));
     EXPECT_EQ(b->getMinDisparity(), 2);
     EXPECT_EQ(b->getMaxDisparity(), 30);
+    EXPECT_EQ(b->getMaxLifetimeCopies(), 3);
+    EXPECT_THROW(b->setMaxLifetimeCopies(256), cv::Exception);
+    EXPECT_THROW(b->setMaxLifetimeCopies(-1), cv::Exception);
     EXPECT_EQ(b->getDescriptorWindow(), 5);
     EXPECT_EQ(b->getMaxVectorLength(), 2);
     EXPECT_EQ(b->getCostWindow(), 7);

@@ -37,6 +37,10 @@ if it is not, it takes `matched` (the lifetime and flow of its match) instead of
 LIFETIME_MATCHED. */
 float processMatchedEventInRows(LifetimeEstimator& estimator, const Event& e, const std::pair<float, Vec2f>& matched,
                                 Vec2f& flow, int& status, LifetimeScratch& scratch);
+/** processEventInRows for a matched event whose match's lifetime has been copied too often: its own plane first;
+where the fit finds none, it takes `matched` instead, counted as LIFETIME_MATCHED. */
+float refitMatchedEventInRows(LifetimeEstimator& estimator, const Event& e, const std::pair<float, Vec2f>& matched,
+                              Vec2f& flow, int& status, LifetimeScratch& scratch);
 void insertEventInRows(LifetimeEstimator& estimator, const Event& e, float lifetime, const Vec2f& flow,
                        LifetimeScratch& scratch);
 /** Adds the scratch's status counts to the estimator's (getStatusCount) and clears them. */

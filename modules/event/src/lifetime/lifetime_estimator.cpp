@@ -69,7 +69,7 @@ public:
 
     float processEvent(const Event& e, Vec2f& flow, int& status, LifetimeScratch& scratch)
     {
-        return estimate(e, nullptr, flow, status, scratch);
+        return estimate(e, nullptr, true, flow, status, scratch);
     }
 
     // processEvent, except that an event whose plane says it is not noise takes `matched` (its lifetime and
@@ -77,7 +77,15 @@ public:
     float processMatchedEvent(const Event& e, const std::pair<float, Vec2f>& matched, Vec2f& flow, int& status,
                               LifetimeScratch& scratch)
     {
-        return estimate(e, &matched, flow, status, scratch);
+        return estimate(e, &matched, true, flow, status, scratch);
+    }
+
+    // processEvent, except that an event whose plane says it is noise takes `matched` instead, counted as
+    // LIFETIME_MATCHED.
+    float refitMatchedEvent(const Event& e, const std::pair<float, Vec2f>& matched, Vec2f& flow, int& status,
+                            LifetimeScratch& scratch)
+    {
+        return estimate(e, &matched, false, flow, status, scratch);
     }
 
     void insertEvent(const Event& e, float lifetime, const Vec2f& flow) CV_OVERRIDE
@@ -227,9 +235,10 @@ public:
     String getDefaultName() const CV_OVERRIDE { return "LifetimeEstimator"; }
 
 private:
-    // processEvent(), or processMatchedEvent() when `matched` is given.
-    float estimate(const Event& e, const std::pair<float, Vec2f>* matched, Vec2f& flow, int& status,
-                   LifetimeScratch& scratch)
+    // processEvent(), or, when `matched` is given, processMatchedEvent() (`matchedNeedsPlane`: the event takes
+    // it when its plane says it is no noise) or refitMatchedEvent() (when its plane says it is).
+    float estimate(const Event& e, const std::pair<float, Vec2f>* matched, bool matchedNeedsPlane, Vec2f& flow,
+                   int& status, LifetimeScratch& scratch)
     {
         checkInside(e);
         const int p = e.p ? 1 : 0;
@@ -252,7 +261,7 @@ private:
         flow = Vec2f(0, 0);
         const double g2 = a * a + b * b;
         const bool plane = status != LIFETIME_NOISE && g2 > 1e-12;
-        if (plane && matched)
+        if (matched && plane == matchedNeedsPlane)
         {
             lifetime = matched->first;
             flow = matched->second;
@@ -468,6 +477,12 @@ private:
 float processEventInRows(LifetimeEstimator& estimator, const Event& e, Vec2f& flow, int& status, LifetimeScratch& scratch)
 {
     return static_cast<LifetimeEstimatorImpl&>(estimator).processEvent(e, flow, status, scratch);
+}
+
+float refitMatchedEventInRows(LifetimeEstimator& estimator, const Event& e, const std::pair<float, Vec2f>& matched,
+                              Vec2f& flow, int& status, LifetimeScratch& scratch)
+{
+    return static_cast<LifetimeEstimatorImpl&>(estimator).refitMatchedEvent(e, matched, flow, status, scratch);
 }
 
 float processMatchedEventInRows(LifetimeEstimator& estimator, const Event& e, const std::pair<float, Vec2f>& matched,

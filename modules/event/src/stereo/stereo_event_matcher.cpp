@@ -146,6 +146,7 @@ void StereoEventMatcherImpl::processAdmitted(const Event& e, Point r, int64 cold
     LifetimeEstimator& estimator = *estimators_[c];
 
     int status = -1;
+    int lifetimeCopies = 0;  // of the lifetime this event ends with (0 unless it was passed on by a match)
     if (mode_ == STEREO_DECOUPLED)
     {
         const LifetimeTimer timer(timeLifetimes_, s.lifetimeTicks);
@@ -171,9 +172,14 @@ void StereoEventMatcherImpl::processAdmitted(const Event& e, Point r, int64 cold
     {
         const LifetimeTimer timer(timeLifetimes_, s.lifetimeTicks);
         std::pair<float, Vec2f> matched;
-        if (est.disparity >= 0 && m.counterpartX >= 0
-            && matchedLifetime(1 - c, m.counterpartX, r.y, p, s, matched.first, matched.second))
+        int copies = 0;
+        // A lifetime copied back and forth between the sensors is never refitted while the edge changes speed
+        // (a swinging limb): past maxLifetimeCopies copies the event fits its own plane first.
+        const bool haveMatch = est.disparity >= 0 && m.counterpartX >= 0
+            && matchedLifetime(1 - c, m.counterpartX, r.y, p, s, matched.first, matched.second, copies);
+        if (haveMatch && copies < maxLifetimeCopies_)
         {
+            lifetimeCopies = copies + 1;
             if (m.confidence >= matchedLifetimeConfidence_)
             {
                 est.lifetime = matched.first;
@@ -188,6 +194,12 @@ void StereoEventMatcherImpl::processAdmitted(const Event& e, Point r, int64 cold
                 // the match's lifetime.
                 est.lifetime = processMatchedEventInRows(estimator, re, matched, est.flow, status, s.lifetimes[c]);
             }
+        }
+        else if (haveMatch && m.confidence >= matchedLifetimeConfidence_)
+        {
+            // Past the limit the event's own plane comes first; the match's lifetime only where it finds none.
+            est.lifetime = refitMatchedEventInRows(estimator, re, matched, est.flow, status, s.lifetimes[c]);
+            lifetimeCopies = copies + 1;
         }
         else
             est.lifetime = processEventInRows(estimator, re, est.flow, status, s.lifetimes[c]);
@@ -212,7 +224,8 @@ void StereoEventMatcherImpl::processAdmitted(const Event& e, Point r, int64 cold
     if (!laterPending)
     {
         if (activeFor > 0)
-            maps_[c].activate(r.x, r.y, p, timeAfter(e.t, activeFor), est.lifetime, est.flow);
+            maps_[c].activate(r.x, r.y, p, timeAfter(e.t, activeFor), est.lifetime, est.flow,
+                              status == LIFETIME_MATCHED ? lifetimeCopies : 0);
         else
             maps_[c].deactivate(r.x, r.y, p);
     }
@@ -659,6 +672,14 @@ void StereoEventMatcherImpl::setMatchedLifetimeConfidence(double c)
     matchedLifetimeConfidence_ = c;
 }
 
+void StereoEventMatcherImpl::setMaxLifetimeCopies(int copies)
+{
+    if (copies < 0 || copies > 255)
+        CV_Error_(Error::StsBadArg, ("StereoEventMatcher: max lifetime copies %d; must be 0..255 (0: every event "
+                                     "fits its plane, 255: no limit)", copies));
+    maxLifetimeCopies_ = copies;
+}
+
 void StereoEventMatcherImpl::setPriorTolerance(int percent)
 {
     if (percent < 0 || percent > 1000)
@@ -703,6 +724,7 @@ void StereoEventMatcherImpl::write(FileStorage& fs) const
        << "maxVectorLength" << maxVectorLength_ << "costWindow" << costWindow_ << "lifetimeWindow" << lifetimeWindow_
        << "aggregationWindow" << aggregationWindow_ << "uniquenessRatio" << uniquenessRatio_
        << "minConfidence" << minConfidence_ << "matchedLifetimeConfidence" << matchedLifetimeConfidence_
+       << "maxLifetimeCopies" << maxLifetimeCopies_
        << "priorTolerance" << priorTolerance_ << "lookAhead" << (double)lookAhead_ << "fixedInterval" << (double)fixedInterval_
        << "frameWindow" << (double)frameWindow_ << "maxLifetime" << (double)maxLifetime_ << "activeDistance"
        << activeDistance_;
@@ -740,6 +762,7 @@ void StereoEventMatcherImpl::read(const FileNode& fn)
     setUniquenessRatio((int)num("uniquenessRatio", uniquenessRatio_));
     setMinConfidence(num("minConfidence", minConfidence_));
     setMatchedLifetimeConfidence(num("matchedLifetimeConfidence", matchedLifetimeConfidence_));
+    setMaxLifetimeCopies((int)num("maxLifetimeCopies", maxLifetimeCopies_));
     setPriorTolerance((int)num("priorTolerance", priorTolerance_));
     setLookAhead(num("lookAhead", (double)lookAhead_));
     setFixedInterval(num("fixedInterval", (double)fixedInterval_));

@@ -113,6 +113,8 @@ public:
 
     void setMinConfidence(double c) CV_OVERRIDE;
     double getMatchedLifetimeConfidence() const CV_OVERRIDE { return matchedLifetimeConfidence_; }
+    int getMaxLifetimeCopies() const CV_OVERRIDE { return maxLifetimeCopies_; }
+    void setMaxLifetimeCopies(int copies) CV_OVERRIDE;
 
     void setMatchedLifetimeConfidence(double c) CV_OVERRIDE;
     int getPriorTolerance() const CV_OVERRIDE { return priorTolerance_; }
@@ -269,7 +271,8 @@ private:
 
     // Median lifetime (and the flow of that event) of the active events of polarity p in the cost window
     // around (x, y) of sensor c. False when none has a lifetime.
-    bool matchedLifetime(int c, int x, int y, int p, MatchScratch& s, float& lifetime, Vec2f& flow) const;
+    // `copies`: how many times that lifetime was copied between the sensors since a plane fit gave it.
+    bool matchedLifetime(int c, int x, int y, int p, MatchScratch& s, float& lifetime, Vec2f& flow, int& copies) const;
 
     Size size_;
     int mode_ = STEREO_COUPLED;
@@ -279,6 +282,7 @@ private:
     int64 fixedInterval_ = 10000, frameWindow_ = 33000, maxLifetime_ = 100000;
     double activeDistance_ = 2.5;
     double minConfidence_ = 0, matchedLifetimeConfidence_ = 0.15;
+    int maxLifetimeCopies_ = 1;
     int priorTolerance_ = 30;
     int64 lookAhead_ = 10000;
     StereoCalibration calibration_;

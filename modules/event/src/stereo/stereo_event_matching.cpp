@@ -369,7 +369,8 @@ size_t StereoEventMatcherImpl::activeEstimateMedian(int c, Point centre, int rad
 // (lifetime, position in the map), which fixes whose flow is returned whatever the selection algorithm.
 // Each active event is one 64-bit key (a positive float's bits order as the float does), so that the
 // selection compares integers.
-bool StereoEventMatcherImpl::matchedLifetime(int c, int x, int y, int p, MatchScratch& s, float& lifetime, Vec2f& flow) const
+bool StereoEventMatcherImpl::matchedLifetime(int c, int x, int y, int p, MatchScratch& s, float& lifetime, Vec2f& flow,
+                                             int& copies) const
 {
     const ZouDescriptorMap& map = maps_[c];
     const int h = lifetimeWindow_ / 2;
@@ -413,6 +414,7 @@ bool StereoEventMatcherImpl::matchedLifetime(int c, int x, int y, int p, MatchSc
     const uint32_t bits = (uint32_t)(median >> 32);
     std::memcpy(&lifetime, &bits, sizeof(lifetime));
     flow = map.flowAt((int)(uint32_t)median);
+    copies = map.copiesAt((int)(uint32_t)median);
     return true;
 }
 

@@ -72,6 +72,7 @@ void ZouDescriptorMap::reset()
             std::fill_n(&nearest_[(size_t)id(0, y, p)], size_.width, (uchar)NONE);
     lifetime_.assign(ids, 0.f);
     flow_.assign(ids, Vec2f());
+    copies_.assign(ids, 0);
     descriptors_.assign((size_t)stride_ * (size_.height + 2 * margin_) * DESCRIPTOR_BYTES, 0);
     if (bandFirstRow_.empty() || bandFirstRow_.back() >= size_.height)
         bandFirstRow_.assign(1, 0);
@@ -190,11 +191,12 @@ int ZouDescriptorMap::scanNearest(int i, int from) const
     return NONE;
 }
 
-void ZouDescriptorMap::activate(int x, int y, int p, int64 expiry, float lifetime, const Vec2f& flow)
+void ZouDescriptorMap::activate(int x, int y, int p, int64 expiry, float lifetime, const Vec2f& flow, int copies)
 {
     const int i = id(x, y, p);
     lifetime_[i] = lifetime;
     flow_[i] = flow;
+    copies_[i] = (uchar)std::min(copies, 254);
     heapOfRow(y).set(i, expiry);
     if (active_[i])
         return;

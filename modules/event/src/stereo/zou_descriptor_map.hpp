@@ -62,9 +62,12 @@ public:
     Vec2f flow(int x, int y, int p) const { return flow_[id(x, y, p)]; }
     // The flow at lifetimeIndex(x, y, p).
     Vec2f flowAt(int index) const { return flow_[(size_t)index]; }
+    // How many times the lifetime at lifetimeIndex(x, y, p) was copied from the other sensor since a plane fit
+    // gave it (0: fitted or predicted here).
+    int copiesAt(int index) const { return copies_[(size_t)index]; }
 
     // Makes the event at (x, y, p) the pixel's active one until expiry (exclusive) [us].
-    void activate(int x, int y, int p, int64 expiry, float lifetime, const Vec2f& flow);
+    void activate(int x, int y, int p, int64 expiry, float lifetime, const Vec2f& flow, int copies = 0);
     void deactivate(int x, int y, int p);
     // Deactivates every event whose expiry is <= t.
     void expireUntil(int64 t);
@@ -135,6 +138,7 @@ private:
     std::vector<uchar> active_, nearest_;
     std::vector<float> lifetime_;
     std::vector<Vec2f> flow_;
+    std::vector<uchar> copies_;  // copiesAt()
     std::vector<uchar> descriptors_;
     std::vector<ExpiryHeap> expiry_;  // one per band of rows
     std::vector<int> bandFirstRow_;   // the bands' first rows

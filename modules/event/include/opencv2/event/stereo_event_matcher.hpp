@@ -116,7 +116,8 @@ neighbours in turn, so that an object's disparity reaches the image's edge from 
   of its polarity in the other sensor's window of getLifetimeWindow() (9) around the counterpart, and its
   plane is not fitted; otherwise the LifetimeEstimator of its sensor fits one (or classifies it as noise).
   After a match less confident than getMatchedLifetimeConfidence() the plane is fitted as well, and the
-  event takes the match's lifetime only when its plane says it is not noise.
+  event takes the match's lifetime only when its plane says it is not noise. A lifetime already passed
+  getMaxLifetimeCopies() times between the sensors is not passed on while the event's own fit finds a plane.
 - DECOUPLED: the LifetimeEstimator runs for every event, then the event is matched.
 - FIXED_INTERVAL: every event is active for getFixedInterval() microseconds; no lifetimes.
 - FRAME_SGBM: per time window (getFrameWindow(), aligned to multiples of it), each sensor's events are
@@ -227,6 +228,13 @@ public:
     lifetime on (more lifetimes, less noise found). */
     CV_WRAP virtual double getMatchedLifetimeConfidence() const = 0;
     CV_WRAP virtual void setMatchedLifetimeConfidence(double confidence) = 0;
+    /** @brief COUPLED: how many times a lifetime may be passed between the sensors by matches before an event
+    fits its own plane again (0..255, default 1; 0: every event fits first, 255: no limit, as published).
+    Both sensors' matched events copy each other's lifetimes, so without a limit a lifetime can go round for
+    as long as the matches hold while the edge changes speed. Past the limit a confidently matched event takes
+    the match's lifetime only where its own fit finds no plane. */
+    CV_WRAP virtual int getMaxLifetimeCopies() const = 0;
+    CV_WRAP virtual void setMaxLifetimeCopies(int copies) = 0;
     /** @brief Temporal prior: how much more [%] than the best the cost of the candidate at the prior may be
     for it to win an otherwise ambiguous match (default 30; 0..1000; 0: no prior, the method as published). */
     CV_WRAP virtual int getPriorTolerance() const = 0;
