@@ -251,8 +251,9 @@ static double coupledLifetimeError(int maxLifetimeCopies)
 
 TEST(StereoEventMatcher, coupled_lifetimes_are_refitted_after_a_copy_on_changing_speeds)
 {
-    // Both sensors' matched events copy each other's lifetimes; without a limit a lifetime goes round while the
-    // limbs speed up and slow down. With the default (one copy) the events past it fit their own planes.
+    // Both sensors' matched events copy each other's lifetimes; without a limit (the default, as published) a
+    // lifetime goes round while the limbs speed up and slow down. With one copy the events past it fit their
+    // own planes.
     const double limited = coupledLifetimeError(1), unlimited = coupledLifetimeError(255);
     std::cout << "walking, COUPLED median lifetime error: " << 100 * limited << " % (no limit on copies: "
               << 100 * unlimited << " %)" << std::endl;

@@ -229,10 +229,12 @@ public:
     CV_WRAP virtual double getMatchedLifetimeConfidence() const = 0;
     CV_WRAP virtual void setMatchedLifetimeConfidence(double confidence) = 0;
     /** @brief COUPLED: how many times a lifetime may be passed between the sensors by matches before an event
-    fits its own plane again (0..255, default 1; 0: every event fits first, 255: no limit, as published).
+    fits its own plane again (0..255; default 255: no limit, as published; 0: every event fits first).
     Both sensors' matched events copy each other's lifetimes, so without a limit a lifetime can go round for
-    as long as the matches hold while the edge changes speed. Past the limit a confidently matched event takes
-    the match's lifetime only where its own fit finds no plane. */
+    as long as the matches hold while the edge changes speed (a swinging limb), and goes stale. Past the limit
+    a confidently matched event takes the match's lifetime only where its own fit finds no plane. 1 makes
+    such lifetimes several times more accurate but costs the lifetime estimation more time than DECOUPLED's
+    (see doc/benchmarks.md). */
     CV_WRAP virtual int getMaxLifetimeCopies() const = 0;
     CV_WRAP virtual void setMaxLifetimeCopies(int copies) = 0;
     /** @brief Temporal prior: how much more [%] than the best the cost of the candidate at the prior may be
