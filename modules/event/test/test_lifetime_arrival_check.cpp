@@ -80,6 +80,15 @@ TEST(Event_LifetimeArrivalCheck, bad_input_is_named_and_leaves_the_check_as_it_w
     EXPECT_THROW(check->getRatioQuantile(1.5), cv::Exception);
     EXPECT_THROW(LifetimeArrivalCheck::create(Size(0, 10)), cv::Exception);
     check->update(std::vector<Event>(), std::vector<float>(), std::vector<Vec2f>());  // an empty packet
+    // Lifetimes so small that the ratio overflows to infinity: a sample in the histogram's open end, never an
+    // out-of-range bin.
+    {
+        Ptr<LifetimeArrivalCheck> tiny = LifetimeArrivalCheck::create(Size(4, 1));
+        std::vector<Event> row = { Event(10, 0, 0, 1), Event(20, 1, 0, 1), Event(30, 2, 0, 1), Event(40, 3, 0, 1) };
+        tiny->update(row, std::vector<float>{ 1e-45f, 1e-38f, 1e-20f, 1.f }, std::vector<Vec2f>(4, Vec2f(1e6f, 0)));
+        EXPECT_EQ(3, tiny->getSampleCount());
+        EXPECT_GT(tiny->getRatioQuantile(0.5), 999);
+    }
     check->update(ev, lifetimes, flow);  // valid: no pixel fired twice, no new sample
     EXPECT_EQ(samples, check->getSampleCount());
 }

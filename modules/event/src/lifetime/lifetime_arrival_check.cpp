@@ -19,7 +19,7 @@ const int64 kNone = std::numeric_limits<int64>::min();
 
 // Ratios in geometric bins 1 % wide from 1e-3 to 1e3; bin 0 holds everything below, the last everything above.
 const double kBinRatio = 1.01;
-const double kLowestRatio = 1e-3;
+const double kLowestRatio = 1e-3, kHighestRatio = 1e3;
 const int kBins = 1390;  // ln(1e6) / ln(1.01) = 1388.5, plus the two open ends
 
 // The events that pointed at one pixel (and polarity) since it last fired: up to kClaims, the oldest dropped.
@@ -152,7 +152,9 @@ private:
                 continue;
             }
             const double ratio = (double)(e.t - here.t[i]) / here.expectedUs[i];
+            // The open ends first: a ratio past 1e3 (up to infinity) must not reach the integer conversion.
             const int b = ratio < kLowestRatio ? 0
+                        : !(ratio < kHighestRatio) ? kBins - 1
                         : std::min(kBins - 1, 1 + (int)(std::log(ratio / kLowestRatio) / std::log(kBinRatio)));
             histogram_[b]++;
             samples_++;
@@ -168,6 +170,10 @@ private:
         const int x = e.x + dx, y = e.y + dy;
         if (x < 0 || x >= size_.width || y < 0 || y >= size_.height)
             return;
+        // > 0: the neighbour lies within 22.5 degrees of the flow (checked again against rounding).
+        const float expected = (float)(lifetime * (vx * dx + vy * dy) / speed);
+        if (!(expected > 0))
+            return;
         Claims& next = claims_[(size_t)p * size_.area() + (size_t)y * size_.width + x];
         if (next.count == kClaims)
         {
@@ -179,8 +185,7 @@ private:
             next.count--;
         }
         next.t[next.count] = e.t;
-        // > 0: the neighbour lies within 22.5 degrees of the flow.
-        next.expectedUs[next.count++] = (float)(lifetime * (vx * dx + vy * dy) / speed);
+        next.expectedUs[next.count++] = expected;
     }
 
     Size size_;
