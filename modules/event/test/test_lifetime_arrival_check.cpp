@@ -39,12 +39,7 @@ TEST(Event_LifetimeArrivalCheck, the_estimators_lifetimes_agree_where_the_ground
     // boxes: the estimator's median lifetime error against the simulator's truth is 0.5 % (benchmarks.md), so
     // the check, which sees only the events, must find the edges arriving after one lifetime.
     Ptr<StereoEventSimulator> sim = StereoEventSimulator::create("boxes");
-    std::vector<Event> ev, left;
-    Mat gt;
-    sim->generate(500000, ev, gt);
-    for (const Event& e : ev)
-        if (e.camera == CAMERA_LEFT)
-            left.push_back(e);
+    const std::vector<Event> left = generateLeftCamera(*sim, 500000).events;
     Ptr<LifetimeEstimator> est = LifetimeEstimator::create(sim->getSensorSize());
     Mat lifetimes, flow;
     est->process(left, lifetimes, flow);

@@ -166,23 +166,15 @@ TEST(Event_Lifetime, simulated_moving_line_lifetimes_against_ground_truth)
     // The "moving_line" scene: a thin line at 75 px/s; ground truth from the simulator.
     Ptr<StereoEventSimulator> sim = StereoEventSimulator::create("moving_line");
     Ptr<LifetimeEstimator> est = LifetimeEstimator::create(sim->getSensorSize());
-    std::vector<Event> ev, left;
-    Mat gt;
-    sim->generate(300000, ev, gt);
-    std::vector<int> rows;
-    for (size_t i = 0; i < ev.size(); i++)
-        if (ev[i].camera == CAMERA_LEFT)
-        {
-            left.push_back(ev[i]);
-            rows.push_back((int)i);
-        }
+    const LeftCameraEvents run = generateLeftCamera(*sim, 300000);
+    const std::vector<Event>& left = run.events;
     Mat lifetimes;
     est->process(left, lifetimes);
     std::vector<double> rel;
     int with = 0;
     for (size_t k = 0; k < left.size(); k++)
     {
-        const float g = gt.at<float>(rows[k], GT_LIFETIME), l = lifetimes.at<float>((int)k);
+        const float g = run.groundTruth.at<float>(run.truthRows[k], GT_LIFETIME), l = lifetimes.at<float>((int)k);
         if (l > 0)
         {
             with++;
@@ -224,23 +216,15 @@ std::pair<double, double> barsLifetimeRatio(double speed, double logContrast, do
     Ptr<StereoEventSimulator> sim = StereoEventSimulator::create(planes, s);
     Ptr<LifetimeEstimator> est = LifetimeEstimator::create(s.resolution);
     est->setInlierDistance(inlierDistance);
-    std::vector<Event> ev, left;
-    Mat gt;
-    sim->generate(travel / speed * 1e6, ev, gt);
-    std::vector<int> rows;
-    for (size_t i = 0; i < ev.size(); i++)
-        if (ev[i].camera == CAMERA_LEFT)
-        {
-            left.push_back(ev[i]);
-            rows.push_back((int)i);
-        }
+    const LeftCameraEvents run = generateLeftCamera(*sim, travel / speed * 1e6);
+    const std::vector<Event>& left = run.events;
     Mat lifetimes;
     est->process(left, lifetimes);
     std::vector<double> ratio;
     int signal = 0;
     for (size_t k = 0; k < left.size(); k++)
     {
-        const bool noise = ((int)gt.at<float>(rows[k], GT_FLAGS) & GT_FLAG_NOISE) != 0;
+        const bool noise = ((int)run.groundTruth.at<float>(run.truthRows[k], GT_FLAGS) & GT_FLAG_NOISE) != 0;
         if (noise || left[k].t < 20 / speed * 1e6)
             continue;
         signal++;

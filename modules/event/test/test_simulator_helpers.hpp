@@ -42,6 +42,29 @@ inline cv::event::SimulatorSettings idealSmallSensor()
     return s;
 }
 
+/** The left camera's events of a simulation run, with each one's row in the run's ground truth. */
+struct LeftCameraEvents
+{
+    std::vector<cv::event::Event> events;
+    std::vector<int> truthRows;  // events[k] is row truthRows[k] of groundTruth
+    cv::Mat groundTruth;         // both cameras' rows, as StereoEventSimulator::generate() gives them
+};
+
+/** Simulates @p sim up to @p untilUs and keeps the left camera's events. */
+inline LeftCameraEvents generateLeftCamera(cv::event::StereoEventSimulator& sim, double untilUs)
+{
+    LeftCameraEvents run;
+    std::vector<cv::event::Event> all;
+    sim.generate(untilUs, all, run.groundTruth);
+    for (size_t i = 0; i < all.size(); i++)
+        if (all[i].camera == cv::event::CAMERA_LEFT)
+        {
+            run.events.push_back(all[i]);
+            run.truthRows.push_back((int)i);
+        }
+    return run;
+}
+
 }  // namespace opencv_test
 
 #endif

@@ -5,6 +5,7 @@
 // LifetimeArrivalCheck: when the edge of an event really reaches the next pixel, over when its lifetime says.
 
 #include "precomp.hpp"
+#include "lifetime/neighbour_along_motion.hpp"
 
 #include <climits>
 #include <cmath>
@@ -163,10 +164,11 @@ private:
         const double speed = std::sqrt((double)vx * vx + (double)vy * vy);
         if (!(lifetime > 0) || !(speed > 0) || !std::isfinite(speed) || !std::isfinite(lifetime))
             return;
-        // The 8-neighbour the flow points to, as LifetimeEstimator predicts it (image y down).
-        const int k = (int)std::lround(std::atan2((double)vy, (double)vx) / (CV_PI / 4));
-        static const int kDx[9] = { -1, -1, 0, 1, 1, 1, 0, -1, -1 }, kDy[9] = { 0, -1, -1, -1, 0, 1, 1, 1, 0 };
-        const int dx = kDx[k + 4], dy = kDy[k + 4];
+        // The 8-neighbour the flow points to, the one LifetimeEstimator predicts.
+        Point offset;
+        if (!neighbourAlongMotion(vx, vy, offset))
+            return;
+        const int dx = offset.x, dy = offset.y;
         const int x = e.x + dx, y = e.y + dy;
         if (x < 0 || x >= size_.width || y < 0 || y >= size_.height)
             return;

@@ -7,6 +7,7 @@
 
 #include "precomp.hpp"
 #include "lifetime/lifetime_estimation_rows.hpp"
+#include "lifetime/neighbour_along_motion.hpp"
 #include "common/timestamp_math.hpp"
 
 #include <Eigen/Dense>
@@ -434,13 +435,10 @@ private:
     // Stores the plane at the 8-neighbour the edge moves to, with the time it should get there.
     void predictNeighbour(const Event& e, int p, double a, double b)
     {
-        const double angle = std::atan2(b, a);  // the direction of motion: along the gradient
-        if (!std::isfinite(angle))
+        Point next;  // the edge moves along the gradient
+        if (!neighbourAlongMotion(a, b, next))
             return;  // no direction (an infinite flow given to insertEvent): nothing to predict
-        const int k = (int)std::lround(angle / (CV_PI / 4));  // -4..4, in steps of 45 degrees
-        // The neighbour in direction k: cos and sin of k x 45 degrees rounded to integers.
-        static const int kDx[9] = { -1, -1, 0, 1, 1, 1, 0, -1, -1 }, kDy[9] = { 0, -1, -1, -1, 0, 1, 1, 1, 0 };
-        const int dx = kDx[k + 4], dy = kDy[k + 4];
+        const int dx = next.x, dy = next.y;
         const int x = e.x + dx, y = e.y + dy;
         if (x < 0 || x >= size_.width || y < 0 || y >= size_.height)
             return;
