@@ -83,13 +83,13 @@ that what one camera alone sees counts neither for nor against a candidate.
 
 **Decision.** The alternatives to the cheapest candidate (the winner) are every candidate further than one
 pixel from it and "no counterpart yet", whose cost is that of matching against nothing (the window's
-descriptor mass, on either sensor). Aggregation is iterative: while the winner does not beat every
-alternative by the uniqueness ratio (its cost below (100 - ratio) % of theirs), the window grows by a ring
-of one pixel, up to A x A. The winner (refined to sub-pixel by a parabola through its neighbours' costs)
-gets a **confidence**, 1 - its cost / the best alternative's cost, set to 0 when the other sensor's own
-estimates around the counterpart disagree by more than a pixel (left-right check). By default every event
-keeps its best estimate with its confidence, which ranks the estimates: keeping only the most confident
-trades density for precision (event_evaluate draws that curve). With setMinConfidence(t), t > 0, the
+descriptor mass, on either sensor). Aggregation is iterative: while the winner does not beat every alternative
+by the uniqueness ratio (its cost below (100 - ratio) % of theirs), the window grows by a ring of one pixel,
+up to A x A. The winner (refined to sub-pixel by two lines of opposite slope through its cost and its
+neighbours') gets a **confidence**, 1 - its cost / the best alternative's cost, set to 0 when the other
+sensor's own estimates around the counterpart disagree by more than a pixel (left-right check). By default
+every event keeps its best estimate with its confidence, which ranks the estimates: keeping only the most
+confident trades density for precision (event_evaluate draws that curve). With setMinConfidence(t), t > 0, the
 estimates whose confidence is below t are rejected: the event is flagged STEREO_AMBIGUOUS and gets no
 disparity rather than a likely wrong one, but its confidence is still output.
 
