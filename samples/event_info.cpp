@@ -9,7 +9,8 @@
 // time, or could not place in time. Exit status 1 when any file could not be read (the error names it).
 // --stats adds, per camera, what the stream looks like (EventStatistics: event rate, ON share, events per
 // pixel per edge crossing, intervals at a pixel, isolated events, pixels active in 10 ms) and ends with one
-// Markdown table of every file and scene side by side: how a simulated scene compares with real recordings.
+// Markdown table of every file and scene side by side: how a simulated scene compares with real recordings
+// (for stereo ones also the right camera's events against the left's: pairs differ in sensitivity).
 
 #include <opencv2/event.hpp>
 
@@ -231,14 +232,19 @@ void printText(const Info& i)
 // --stats: every file's and scene's cameras side by side.
 void printStatisticsTable(const std::vector<Info>& infos)
 {
-    std::cout << "\n| recording | camera | kev/s | ON share | events per crossing | interval p10 / median / p90 [ms] "
-                 "| isolated | pixels active in 10 ms |\n|---|---|---|---|---|---|---|---|\n";
+    // "events / left's": a stereo pair's cameras differ in sensitivity, and so in how many events they fire.
+    std::cout << "\n| recording | camera | kev/s | events / left's | ON share | events per crossing "
+                 "| interval p10 / median / p90 [ms] | isolated | pixels active in 10 ms |\n"
+                 "|---|---|---|---|---|---|---|---|---|\n";
     for (const Info& i : infos)
         for (size_t c = 0; c < i.cameras.size(); c++)
         {
             const EventStreamStatistics& st = i.cameras[c];
-            std::printf("| %s | %s | %.1f | %.2f | %.2f | %.3f / %.1f / %.0f | %.1f %% | %.2f %% |\n", i.file.c_str(),
-                        i.stereo ? (c == 0 ? "left" : "right") : "-", st.eventRate / 1e3, st.onShare,
+            char ratio[32] = "-";
+            if (i.stereo && i.cameras[0].events > 0)
+                std::snprintf(ratio, sizeof(ratio), "%.2f", st.events / i.cameras[0].events);
+            std::printf("| %s | %s | %.1f | %s | %.2f | %.2f | %.3f / %.1f / %.0f | %.1f %% | %.2f %% |\n", i.file.c_str(),
+                        i.stereo ? (c == 0 ? "left" : "right") : "-", st.eventRate / 1e3, ratio, st.onShare,
                         st.eventsPerCrossing, st.intervalP10Us / 1e3, st.intervalMedianUs / 1e3,
                         st.intervalP90Us / 1e3, 100 * st.isolatedShare, 100 * st.activePixelShare);
         }

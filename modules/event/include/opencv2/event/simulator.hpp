@@ -144,8 +144,9 @@ Named scenes (create()):
   fires at only part of its pixels (the paper's Figure 4 case);
 - "cluttered": several textured planes at different depths, translating and rotating, with background
   activity noise;
-- "boxes", "boxes_fast", "walking", "low_contrast": the realistic scenes (sparse edges on a plain wall, a
-  walking figure, faint texture) with a real DAVIS's noise, latency and imperfect rectification;
+- "boxes", "boxes_fast", "walking", "walking_near", "low_contrast": the realistic scenes (sparse edges on a
+  plain wall, a walking figure 3 m and 1.5 m away, faint texture) with a real DAVIS's noise, latency and
+  imperfect rectification;
 - "boxes_flicker": "boxes" lit by a lamp flickering at 100 Hz, the lamp itself in view (events flagged
   GT_FLAG_FLICKER).
 */
