@@ -282,7 +282,7 @@ private:
     int64 fixedInterval_ = 10000, frameWindow_ = 33000, maxLifetime_ = 100000;
     double activeDistance_ = 2.5;
     double minConfidence_ = 0, matchedLifetimeConfidence_ = 0.15;
-    int maxLifetimeCopies_ = 255;
+    int maxLifetimeCopies_ = 1;
     int priorTolerance_ = 30;
     int64 lookAhead_ = 10000;
     StereoCalibration calibration_;

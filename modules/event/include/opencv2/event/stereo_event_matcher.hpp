@@ -229,12 +229,14 @@ public:
     CV_WRAP virtual double getMatchedLifetimeConfidence() const = 0;
     CV_WRAP virtual void setMatchedLifetimeConfidence(double confidence) = 0;
     /** @brief COUPLED: how many times a lifetime may be passed between the sensors by matches before an event
-    fits its own plane again (0..255; default 255: no limit, as published; 0: every event fits first).
+    fits its own plane again (0..255; default 1; 255: no limit, as published; 0: every event fits first).
     Both sensors' matched events copy each other's lifetimes, so without a limit a lifetime can go round for
-    as long as the matches hold while the edge changes speed (a swinging limb), and goes stale. Past the limit
-    a confidently matched event takes the match's lifetime only where its own fit finds no plane. 1 makes
-    such lifetimes several times more accurate but costs the lifetime estimation more time than DECOUPLED's
-    (see doc/benchmarks.md). */
+    as long as the matches hold while the edge changes speed (a swinging limb), and goes stale; the median
+    over the other sensor's active events favours long lifetimes (their events stay active longer), so the
+    copies also drift upwards. Past the limit a confidently matched event takes the match's lifetime only
+    where its own fit finds no plane. 255 gives the paper's speed-up of the lifetime estimation over
+    DECOUPLED, with lifetimes several times less accurate on articulated motion (doc/stereo.md,
+    doc/benchmarks.md). */
     CV_WRAP virtual int getMaxLifetimeCopies() const = 0;
     CV_WRAP virtual void setMaxLifetimeCopies(int copies) = 0;
     /** @brief Temporal prior: how much more [%] than the best the cost of the candidate at the prior may be
