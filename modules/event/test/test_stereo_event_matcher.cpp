@@ -272,8 +272,6 @@ TEST(StereoEventMatcher, coupled_beats_frame_sgbm_on_textured_scenes)
     }
 }
 
-// The paper's Figure 4: with a less sensitive right sensor, its events are too sparse for plane fits;
-// matched to the other sensor they still get a lifetime. COUPLED must give >= 20 % more of them one.
 // COUPLED's median relative lifetime error against the simulator's truth over the signal events with a
 // lifetime, on 600 ms of a walking figure (limbs swinging: their edges change speed all the time).
 static double coupledLifetimeError(const std::string& scene, int maxLifetimeCopies)
@@ -332,6 +330,8 @@ TEST(StereoEventMatcher, coupled_leads_frame_sgbm_by_ten_points_on_the_near_walk
     EXPECT_GE(coupledRate, sgbmRate + 10);
 }
 
+// The paper's Figure 4: with a less sensitive right sensor, its events are too sparse for plane fits;
+// matched to the other sensor they still get a lifetime. COUPLED must give >= 20 % more of them one.
 TEST(StereoEventMatcher, coupled_gives_the_weak_sensor_more_lifetimes_than_decoupled)
 {
     const Accuracy coupled = simulate("faint_line", STEREO_COUPLED, 297);
