@@ -14,7 +14,7 @@
 // picture as disparity_NNNNN.png (NNNNN: the window) for the first window and one per eighth of the run
 // (--all-frames: every window),
 // disparity_histogram.png and summary.md (events/s, share with disparity and with lifetime, dominant
-// disparity, input events outside the sensor or going back in time, and errors against the ground truth
+// disparity, the quartiles of the left estimates' confidence, input events outside the sensor or going back in time, and errors against the ground truth
 // when simulated). Progress goes to stderr.
 
 #include <opencv2/event.hpp>
@@ -223,6 +223,30 @@ Mat histogramPicture(const std::vector<int64>& h, int minDisparity)
     return img;
 }
 
+// The quartiles of the left estimates' confidence, from a histogram of bins 0.01 wide, and the share below
+// the matcher's default rejection threshold of the uncertain lifetimes (0.15): how clear-cut the matches of
+// this recording are (a scene with few, alike edges along the rows gives low values, whatever the matcher).
+std::string confidenceQuartiles(const std::vector<int64>& h)
+{
+    int64 n = 0;
+    for (int64 c : h)
+        n += c;
+    if (n == 0)
+        return "none (no left estimate)";
+    auto quantile = [&](double q) {
+        int64 seen = 0;
+        for (size_t k = 0; k < h.size(); k++)
+            if ((seen += h[k]) > (int64)(q * (double)(n - 1)))
+                return (double)k / (double)(h.size() - 1);
+        return 1.0;
+    };
+    int64 low = 0;
+    for (size_t k = 0; k < 15; k++)
+        low += h[k];
+    return cv::format("%.2f / %.2f / %.2f (%.1f %% below 0.15)", quantile(0.25), quantile(0.5), quantile(0.75),
+                      100.0 * (double)low / (double)n);
+}
+
 // Whether the pair's rows line up: the first two seconds of events (at most 2 million) go to
 // estimateRowAlignment() once, rectified first when there is a calibration. A pair off by more than half a
 // pixel at the image's sides loses matches: the user hears of it on stderr and in the summary.
@@ -358,6 +382,7 @@ int main(int argc, char** argv)
         const int zoom = std::max(1, 480 / std::max(size.width, size.height));
         VideoWriter video;
         std::vector<int64> histogram((size_t)(opt.maxDisparity - opt.minDisparity + 1), 0);
+        std::vector<int64> confidences(101, 0);  // the left estimates', bins of 0.01
         int64 events = 0, withDisparity[2] = { 0, 0 }, withLifetime[2] = { 0, 0 }, perCamera[2] = { 0, 0 };
         int64 candidates = 0, estimated = 0, within1 = 0, pictures = 0, windows = 0;
         int lastEighth = 0;
@@ -402,6 +427,8 @@ int main(int argc, char** argv)
                 perCamera[e.camera]++;
                 withDisparity[e.camera] += d >= 0;
                 withLifetime[e.camera] += (f & STEREO_HAS_LIFETIME) != 0;
+                if (d >= 0 && e.camera == CAMERA_LEFT)
+                    confidences[(size_t)std::min(100, std::max(0, (int)(confidence.at<float>((int)i) * 100.f)))]++;
                 if (d >= 0)
                     histogram[(size_t)std::min<int>((int)histogram.size() - 1, std::max(0, (int)std::lround(d) - opt.minDisparity))]++;
                 if (source.hasTruth())
@@ -495,7 +522,9 @@ int main(int argc, char** argv)
              << withLifetime[0] << ", right " << withLifetime[1] << ") |\n"
              << "| row alignment of the pair (estimateRowAlignment, first 2 s) | " << alignment.result() << " |\n"
              << "| dominant disparity | " << dominant << " px (" << pct(votes, withDisparity[0] + withDisparity[1])
-             << " % of estimates) |\n";
+             << " % of estimates) |\n"
+             << "| confidence of the left estimates (quartiles) | "
+             << (opt.mode == "sgbm" ? std::string("none (frames + SGBM give no confidence)") : confidenceQuartiles(confidences)) << " |\n";
         if (source.hasTruth())
             text << "| ground truth: density (estimated / non-occluded signal) | " << pct(estimated, candidates) << " % |\n"
                  << "| ground truth: estimates within 1 px | " << pct(within1, estimated) << " % |\n"

@@ -2,7 +2,8 @@
 # dominant disparity against the known value (simulated: f * B / Z of the foreground plane; TUM Fan: 8 px,
 # shared/data/README.md; a list: any of a scene's surfaces) within DISPARITY_TOLERANCE px (default 1); optionally the ground-truth accuracy
 # (MIN_WITHIN1 % of estimates within 1 px, MIN_DENSITY %); optionally that every one of the file's
-# INPUT_EVENTS events is accounted for (processed, or reported as outside the sensor); and that the files
+# INPUT_EVENTS events is accounted for (processed, or reported as outside the sensor); optionally the median
+# confidence of the left estimates (MEDIAN_CONFIDENCE "lo;hi", a recording's documented figure); and that the files
 # REQUIRED_FILES names were written.
 foreach(v SAMPLE OUTPUT_DIR EXPECTED_DISPARITY REQUIRED_FILES)
   if(NOT DEFINED ${v})
@@ -68,6 +69,19 @@ foreach(check "within 1 px;MIN_WITHIN1" "density \\(estimated / non-occluded sig
     endif()
   endif()
 endforeach()
+if(DEFINED MEDIAN_CONFIDENCE)
+  # "lo;hi": the median confidence of the left estimates, as documented for the recording.
+  if(NOT summary MATCHES "confidence of the left estimates[^|]*\\| ([0-9.]+) / ([0-9.]+) / ([0-9.]+)")
+    message(FATAL_ERROR "no confidence quartiles in summary.md")
+  endif()
+  set(median "${CMAKE_MATCH_2}")
+  list(GET MEDIAN_CONFIDENCE 0 lo)
+  list(GET MEDIAN_CONFIDENCE 1 hi)
+  if(median LESS lo OR median GREATER hi)
+    message(FATAL_ERROR "median confidence ${median}, expected ${lo}..${hi}")
+  endif()
+  message("median confidence ${median} (expected ${lo}..${hi})")
+endif()
 foreach(f ${REQUIRED_FILES})
   if(NOT EXISTS "${OUTPUT_DIR}/${f}")
     message(FATAL_ERROR "${f} was not written")
