@@ -14,8 +14,8 @@
 // picture as disparity_NNNNN.png (NNNNN: the window) for the first window and one per eighth of the run
 // (--all-frames: every window),
 // disparity_histogram.png and summary.md (events/s, share with disparity and with lifetime, dominant
-// disparity, the quartiles of the left estimates' confidence, input events outside the sensor or going back in time, and errors against the ground truth
-// when simulated). Progress goes to stderr.
+// disparity, the quartiles of the left estimates' confidence, input events outside the sensor or going back
+// in time, and errors against the ground truth when simulated). Progress goes to stderr.
 
 #include <opencv2/event.hpp>
 #include <opencv2/core/utils/filesystem.hpp>  // after a core header: it needs CV_EXPORTS
@@ -223,11 +223,13 @@ Mat histogramPicture(const std::vector<int64>& h, int minDisparity)
     return img;
 }
 
-// The quartiles of the left estimates' confidence, from a histogram of bins 0.01 wide, and the share below
-// the matcher's default rejection threshold of the uncertain lifetimes (0.15): how clear-cut the matches of
-// this recording are (a scene with few, alike edges along the rows gives low values, whatever the matcher).
+// The quartiles of the left estimates' confidence, from a histogram of confidence 0..1 in equal bins, and the
+// share below 0.15 (the threshold doc/benchmarks.md's rejection examples use): how clear-cut the matches of this
+// recording are (a scene with few, alike edges along the rows gives low values, whatever the matcher).
 std::string confidenceQuartiles(const std::vector<int64>& h)
 {
+    const double lowConfidence = 0.15;
+    const double binsPerUnit = (double)(h.size() - 1);
     int64 n = 0;
     for (int64 c : h)
         n += c;
@@ -237,14 +239,14 @@ std::string confidenceQuartiles(const std::vector<int64>& h)
         int64 seen = 0;
         for (size_t k = 0; k < h.size(); k++)
             if ((seen += h[k]) > (int64)(q * (double)(n - 1)))
-                return (double)k / (double)(h.size() - 1);
+                return (double)k / binsPerUnit;
         return 1.0;
     };
     int64 low = 0;
-    for (size_t k = 0; k < 15; k++)
+    for (size_t k = 0; k < (size_t)std::lround(lowConfidence * binsPerUnit); k++)
         low += h[k];
-    return cv::format("%.2f / %.2f / %.2f (%.1f %% below 0.15)", quantile(0.25), quantile(0.5), quantile(0.75),
-                      100.0 * (double)low / (double)n);
+    return cv::format("%.2f / %.2f / %.2f (%.1f %% below %.2f)", quantile(0.25), quantile(0.5), quantile(0.75),
+                      100.0 * (double)low / (double)n, lowConfidence);
 }
 
 // Whether the pair's rows line up: the first two seconds of events (at most 2 million) go to
