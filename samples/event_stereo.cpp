@@ -15,7 +15,8 @@
 // (--all-frames: every window),
 // disparity_histogram.png and summary.md (events/s, share with disparity and with lifetime, dominant
 // disparity, the quartiles of the left estimates' confidence, input events outside the sensor or going back
-// in time, and errors against the ground truth when simulated). Progress goes to stderr.
+// in time, the pair check, and errors against the ground truth when simulated). Progress, and warnings when the
+// pair's rows are off or its events line up outside the range or with the cameras exchanged, go to stderr.
 
 #include <opencv2/event.hpp>
 #include <opencv2/core/utils/filesystem.hpp>  // after a core header: it needs CV_EXPORTS
@@ -144,6 +145,7 @@ public:
 
     Size sensorSize() const { return sim_ ? sim_->getSensorSize() : cap_.getSensorSize(); }
     const std::string& name() const { return name_; }
+    bool isText() const { return !sim_ && cap_.getBackendName() == "TEXT"; }
     bool hasTruth() const { return !sim_.empty(); }
     const Ptr<StereoEventSimulator>& simulator() const { return sim_; }
 
@@ -249,14 +251,17 @@ std::string confidenceQuartiles(const std::vector<int64>& h)
                       100.0 * (double)low / (double)n, lowConfidence);
 }
 
-// Whether the pair's rows line up: the first two seconds of events (at most 2 million) go to
-// estimateRowAlignment() once, rectified first when there is a calibration. A pair off by more than half a
-// pixel at the image's sides loses matches: the user hears of it on stderr and in the summary.
-class RowAlignmentCheck
+// Whether the pair is set up as the matcher assumes: its rows line up (estimateRowAlignment()) and its events
+// line up at a disparity inside the searched range, with the cameras the right way round
+// (estimateDominantDisparity()). Both look once at the first two seconds of events (longer while there are
+// fewer than 20,000, up to 20 s; at most 2 million), rectified first when there is a calibration. A pair that
+// fails either loses matches: the user hears of it on stderr and in the summary.
+class PairCheck
 {
 public:
-    RowAlignmentCheck(Size size, int minDisparity, int maxDisparity, const std::string& calib)
-        : size_(size), minDisparity_(minDisparity), maxDisparity_(maxDisparity)
+    // `swapAdvice`: how this source's cameras are exchanged (an option to give).
+    PairCheck(Size size, int minDisparity, int maxDisparity, const std::string& swapAdvice, const std::string& calib)
+        : size_(size), minDisparity_(minDisparity), maxDisparity_(maxDisparity), swapAdvice_(swapAdvice)
     {
         if (!calib.empty())
             calibration_ = readStereoCalibration(calib);
@@ -270,7 +275,8 @@ public:
         {
             if (first_ < 0)
                 first_ = e.t;
-            if (e.t - first_ > 2000000 || events_.size() >= 2000000)
+            const int64 span = e.t - first_;
+            if ((span > 2000000 && events_.size() >= 20000) || span > 20000000 || events_.size() >= 2000000)
             {
                 estimate();
                 return;
@@ -279,11 +285,22 @@ public:
         }
     }
 
-    /** The summary line's text (estimates now if the stream was shorter than two seconds). */
-    std::string result()
+    /** The summary lines' text (estimated now if the stream was shorter). */
+    std::string rowResult()
     {
         estimate();
-        return result_;
+        return rowResult_;
+    }
+    std::string disparityResult()
+    {
+        estimate();
+        return disparityResult_;
+    }
+    /** How much of the stream the check looked at, for the summary's labels. */
+    std::string span()
+    {
+        estimate();
+        return cv::format("first %.1f s", (double)spanUs_ * 1e-6);
     }
 
 private:
@@ -292,25 +309,65 @@ private:
         if (done_)
             return;
         done_ = true;
-        if (events_.size() < 2000 || size_.width < 3 * maxDisparity_ / 2 + 12)
+        if (!events_.empty())
+            spanUs_ = events_.back().t - events_.front().t;
+        if (events_.size() < 2000)
         {
-            result_ = "not estimated (too few events or too narrow a sensor)";
+            rowResult_ = disparityResult_ = "not estimated (too few events)";
             return;
         }
         if (!calibration_.imageSize.empty())
             rectify();
+        estimateDisparity();
+        if (size_.width < 3 * maxDisparity_ / 2 + 12)
+            rowResult_ = "not estimated (too narrow a sensor for the disparity range)";
+        else
+            estimateRows();
+        events_.clear();
+        events_.shrink_to_fit();
+    }
+
+    void estimateRows()
+    {
         double score = 0;
         const Vec2d a = estimateRowAlignment(events_, size_, minDisparity_, maxDisparity_, &score);
         const double sides = std::abs(a[0]) + std::abs(std::sin(a[1])) * 0.5 * size_.width;
         char text[200];
         std::snprintf(text, sizeof(text), "offset %+.2f px, roll %+.4f rad: up to %.2f px at the sides (score %.2f, %zu events)",
                       a[0], a[1], sides, score, events_.size());
-        result_ = text;
+        rowResult_ = text;
         if (score >= 0.4 && sides > 0.5)
             std::cerr << "\nevent_stereo: warning: the right camera's rows are off the left's by " << text
                       << "; check the rectification (matches are searched along the rows)\n";
-        events_.clear();
-        events_.shrink_to_fit();
+    }
+
+    // Looks twice as far as the searched range (at most half the sensor), so that a scene beyond the range, or
+    // a swapped pair's negative disparity, shows.
+    void estimateDisparity()
+    {
+        const int reach = std::min(size_.width / 2, std::max(20, 2 * std::max(maxDisparity_, -minDisparity_)));
+        double score = 0;
+        const int d = estimateDominantDisparity(events_, size_, reach, noArray(), &score);
+        disparityResult_ = cv::format("%d px (correlation %.2f, %zu events)", d, score, events_.size());
+        if (score < kMinScore)
+            return;  // the events do not say enough to warn on
+        std::string advice;
+        if (d < 0 && d < minDisparity_ - 1)
+        {
+            advice = cv::format("the right camera sees the scene to the right of the left one (the events line up "
+                                "at %d px): the cameras look exchanged; %s", d, swapAdvice_.c_str());
+        }
+        else if (d > maxDisparity_)
+            advice = cv::format("most of the scene lines up at %d px, beyond --max-disparity=%d: widen the range",
+                                d, maxDisparity_);
+        else if (d < minDisparity_ - 1)
+            advice = cv::format("most of the scene lines up at %d px, below --min-disparity=%d: lower it", d,
+                                minDisparity_);
+        if (!advice.empty())
+        {
+            disparityResult_ += "; " + advice;
+            std::cerr << "\nevent_stereo: warning: " << advice << "\n";
+        }
     }
 
     void rectify()
@@ -336,13 +393,18 @@ private:
         }
     }
 
+    // Below this correlation at the peak the events do not say where the scene lies (measured: 0.18-0.85 on
+    // the simulated scenes, 2 s each).
+    static constexpr double kMinScore = 0.1;
+
     Size size_;
     int minDisparity_, maxDisparity_;
+    std::string swapAdvice_;
     StereoCalibration calibration_;
     std::vector<Event> events_;
-    int64 first_ = -1;
+    int64 first_ = -1, spanUs_ = 0;
     bool done_ = false;
-    std::string result_;
+    std::string rowResult_, disparityResult_;
 };
 
 }  // namespace
@@ -396,7 +458,10 @@ int main(int argc, char** argv)
         Mat truth, disparity, lifetime, flags, depth, confidence, truthDisparity;
         double windowEnd = 0;
         char line[160];
-        RowAlignmentCheck alignment(size, opt.minDisparity, opt.maxDisparity, opt.calib);
+        const std::string swapAdvice = !opt.left.empty() ? "exchange --left and --right"
+            : source.isText() ? cv::format("give --left-camera-value=%d", 1 - opt.leftCameraValue)
+                              : "exchange the left and right cameras";
+        PairCheck pairCheck(size, opt.minDisparity, opt.maxDisparity, swapAdvice, opt.calib);
         while (source.next(packet, truth, windowEnd))
         {
             if (filter)
@@ -415,7 +480,7 @@ int main(int argc, char** argv)
                     truth = keptTruth;
                 }
             }
-            alignment.add(packet);
+            pairCheck.add(packet);
             const int64 t0 = getTickCount();
             matcher->process(packet, disparity, lifetime, flags, depth, noArray(), confidence);
             seconds += (double)(getTickCount() - t0) / getTickFrequency();
@@ -522,7 +587,9 @@ int main(int argc, char** argv)
              << pct(withDisparity[0], perCamera[0]) << " %, right " << pct(withDisparity[1], perCamera[1]) << " %) |\n"
              << "| events with a lifetime | " << pct(withLifetime[0] + withLifetime[1], events) << " % (left "
              << withLifetime[0] << ", right " << withLifetime[1] << ") |\n"
-             << "| row alignment of the pair (estimateRowAlignment, first 2 s) | " << alignment.result() << " |\n"
+             << "| row alignment of the pair (estimateRowAlignment, " << pairCheck.span() << ") | " << pairCheck.rowResult() << " |\n"
+             << "| disparity the pair's events line up at (estimateDominantDisparity, " << pairCheck.span() << ") | "
+             << pairCheck.disparityResult() << " |\n"
              << "| dominant disparity | " << dominant << " px (" << pct(votes, withDisparity[0] + withDisparity[1])
              << " % of estimates) |\n"
              << "| confidence of the left estimates (quartiles) | "

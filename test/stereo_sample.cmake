@@ -3,9 +3,11 @@
 # shared/data/README.md; a list: any of a scene's surfaces) within DISPARITY_TOLERANCE px (default 1); optionally the ground-truth accuracy
 # (MIN_WITHIN1 % of estimates within 1 px, MIN_DENSITY %); optionally that every one of the file's
 # INPUT_EVENTS events is accounted for (processed, or reported as outside the sensor); optionally the median
-# confidence of the left estimates (MEDIAN_CONFIDENCE "lo;hi", a recording's documented figure); and that the files
-# REQUIRED_FILES names were written.
-foreach(v SAMPLE OUTPUT_DIR EXPECTED_DISPARITY REQUIRED_FILES)
+# confidence of the left estimates (MEDIAN_CONFIDENCE "lo;hi", a recording's documented figure); optionally the
+# disparity the pair's events line up at (LINE_UP_DISPARITY, within 1 px) and a text the summary must hold
+# (SUMMARY_REGEX, e.g. a warning); and that the files REQUIRED_FILES names were written. EXPECTED_DISPARITY
+# may be left out where the dominant disparity means nothing (a pair given the wrong way round).
+foreach(v SAMPLE OUTPUT_DIR REQUIRED_FILES)
   if(NOT DEFINED ${v})
     message(FATAL_ERROR "stereo_sample.cmake: ${v} not set")
   endif()
@@ -30,6 +32,9 @@ if(NOT summary MATCHES "dominant disparity[^|]*\\| ([0-9-]+) px")
   message(FATAL_ERROR "no dominant disparity in summary.md")
 endif()
 set(d "${CMAKE_MATCH_1}")
+if(NOT DEFINED EXPECTED_DISPARITY)
+  set(EXPECTED_DISPARITY "${d}")
+endif()
 if(NOT DEFINED DISPARITY_TOLERANCE)
   set(DISPARITY_TOLERANCE 1)
 endif()
@@ -81,6 +86,19 @@ if(DEFINED MEDIAN_CONFIDENCE)
     message(FATAL_ERROR "median confidence ${median}, expected ${lo}..${hi}")
   endif()
   message("median confidence ${median} (expected ${lo}..${hi})")
+endif()
+if(DEFINED LINE_UP_DISPARITY)
+  if(NOT summary MATCHES "events line up at[^|]*\\| (-?[0-9]+) px")
+    message(FATAL_ERROR "no line-up disparity in summary.md")
+  endif()
+  math(EXPR diff "${CMAKE_MATCH_1} - (${LINE_UP_DISPARITY})")
+  if(diff GREATER 1 OR diff LESS -1)
+    message(FATAL_ERROR "the events line up at ${CMAKE_MATCH_1} px, expected ${LINE_UP_DISPARITY} +/- 1 px")
+  endif()
+  message("the events line up at ${CMAKE_MATCH_1} px (expected ${LINE_UP_DISPARITY})")
+endif()
+if(DEFINED SUMMARY_REGEX AND NOT summary MATCHES "${SUMMARY_REGEX}")
+  message(FATAL_ERROR "summary.md does not say '${SUMMARY_REGEX}'")
 endif()
 foreach(f ${REQUIRED_FILES})
   if(NOT EXISTS "${OUTPUT_DIR}/${f}")

@@ -3,22 +3,9 @@
 // of this distribution and at http://opencv.org/license.html.
 
 #include "test_precomp.hpp"
+#include "test_simulator_helpers.hpp"
 
 namespace opencv_test { namespace {
-
-// 200 ms of a scene with the right camera's rows moved by the simulator's rightRowOffset / rightRollRad.
-std::vector<Event> misaligned(const String& scene, double rowOffset, double roll)
-{
-    Ptr<StereoEventSimulator> ideal = StereoEventSimulator::create(scene);
-    SimulatorSettings s = ideal->getSettings();
-    s.rightRowOffset = rowOffset;
-    s.rightRollRad = roll;
-    Ptr<StereoEventSimulator> sim = StereoEventSimulator::create(ideal->getPlanes(), s);
-    std::vector<Event> ev;
-    Mat gt;
-    sim->generate(200000, ev, gt);
-    return ev;
-}
 
 TEST(Event_RowAlignment, finds_the_simulated_row_offset_and_roll)
 {
@@ -28,7 +15,7 @@ TEST(Event_RowAlignment, finds_the_simulated_row_offset_and_roll)
     for (const Case& c : { Case{ 0, 0 }, Case{ -1.5, 0 }, Case{ 0.5, 0.01 }, Case{ 0, -0.012 } })
     {
         double score = 0;
-        const Vec2d a = estimateRowAlignment(misaligned("two_planes", c.offset, c.roll), Size(240, 180), 0, 40, &score);
+        const Vec2d a = estimateRowAlignment(misalignedScene("two_planes", c.offset, c.roll), Size(240, 180), 0, 40, &score);
         EXPECT_NEAR(c.offset, a[0], 0.25) << "offset " << c.offset << ", roll " << c.roll;
         EXPECT_NEAR(c.roll, a[1], 0.003) << "offset " << c.offset << ", roll " << c.roll;
         EXPECT_GT(score, 0.4);

@@ -100,6 +100,31 @@ events do not say much, and the estimate should not be trusted.
 CV_EXPORTS_W Vec2d estimateRowAlignment(InputArray events, Size sensorSize, int minDisparity = 0, int maxDisparity = 40,
                                         CV_OUT double* score = 0);
 
+/** @brief The disparity at which a stereo pair's events line up best, measured from its events: the shift of
+most of the scene, and a check that the cameras are the right way round.
+
+The events are cut into slices of @p sliceUs; in each, a camera's image marks the pixels that fired (a hot
+pixel counts once per slice, as any other), spread over three rows so that a pair a pixel off rectification
+still lines up. The left slices are compared with the right ones moved by every disparity d in
+[-maxDisparity, maxDisparity] (left pixel x against right pixel x - d, over the columns both cover) by
+normalised correlation over all slices at once. A normal pair peaks at a positive d (a point appears further
+left in the right camera); a peak at a negative d means the right camera sees the scene to the right of the
+left one: the cameras are exchanged (or the pair is not left-right).
+@param events stereo events (camera column), time-ordered, any form getEventMat() accepts; events outside the
+sensor or of other cameras are ignored.
+@param sensorSize the sensor size.
+@param maxDisparity largest |d| tried, 1 .. sensorSize.width / 2.
+@param correlation optional output: 1 x (2 maxDisparity + 1) CV_64F, the correlation at d = -maxDisparity ..
+maxDisparity (0 where a camera fired nowhere in the compared columns).
+@param score optional output: the correlation at the returned disparity (-1..1; 0 when the events do not
+overlap in time or space). Below about 0.1 the events do not say much.
+@param sliceUs the slice length [us]: short enough that a moving edge is still thin in it.
+@return the disparity of the highest correlation (0 when there is nothing to compare).
+*/
+CV_EXPORTS_W int estimateDominantDisparity(InputArray events, Size sensorSize, int maxDisparity = 40,
+                                           OutputArray correlation = noArray(), CV_OUT double* score = 0,
+                                           double sliceUs = 20000);
+
 //! @}
 
 }  // namespace event
