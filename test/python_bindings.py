@@ -71,6 +71,13 @@ events.sort(key=lambda e: e[0])
 arr = np.array(events, dtype=np.float64)
 stereo = ev.packEvents(arr[:, 0], arr[:, 1].astype(np.int32), arr[:, 2].astype(np.int32),
                        np.ones(len(arr), np.int32), camera=arr[:, 3].astype(np.int32))
+# Where the pair's events line up: the edge's 12 px (every 20 ms slice alike: correlation 1), and -12 px with
+# the cameras exchanged.
+d, corr, score = ev.estimateDominantDisparity(stereo, (64, 24), 20)
+assert d == 12 and corr.shape == (1, 41) and abs(score - 1) < 1e-9, (d, corr.shape, score)
+exchanged = ev.packEvents(arr[:, 0], arr[:, 1].astype(np.int32), arr[:, 2].astype(np.int32),
+                          np.ones(len(arr), np.int32), camera=1 - arr[:, 3].astype(np.int32))
+assert ev.estimateDominantDisparity(exchanged, (64, 24), 20)[0] == -12
 matcher = ev.StereoEventMatcher_create((64, 24), ev.STEREO_COUPLED)
 calib = ev.StereoCalibration_fromRectified((64, 24), 100.0, 0.1)
 assert abs(calib.baseline() - 0.1) < 1e-12 and calib.P2.shape == (3, 4)
