@@ -2,7 +2,7 @@
 // live stereo DAVIS pair, or the simulator's built-in scene; the main job of this project.
 //
 //   event_stereo [--input=FILE | --left=FILE --right=FILE | --live] [--calib=FILE] [--sensor=WxH]
-//                [--left-camera-value=0|1] [--mode=coupled|decoupled|fixed|sgbm]
+//                [--left-camera-value=0|1] [--right-time-offset-ms=MS] [--mode=coupled|decoupled|fixed|sgbm]
 //                [--min-disparity=PX] [--max-disparity=PX] [--frame-ms=MS] [--threads=N] [--no-csv]
 //                [--all-frames] [--output=DIR] [--set=NAME=VALUE,...] [--scene=NAME --duration-ms=MS]
 //                [--filter=NAME [--filter-set=NAME=VALUE,...]]
@@ -49,7 +49,7 @@ struct Options
     int leftCameraValue = 0, minDisparity = 0, maxDisparity = 0;
     // Row bands on their own threads (StereoEventMatcher::setNumThreads): the same results as one thread.
     int threads = std::min(4, std::max(1, getNumberOfCPUs()));
-    double frameMs = 0, durationMs = 0;
+    double frameMs = 0, durationMs = 0, rightTimeOffsetMs = 0;
 };
 
 const char* const keys =
@@ -61,6 +61,7 @@ const char* const keys =
     "{calib             |            | stereo calibration (FileStorage: K1 D1 K2 D2 R T, image size)}"
     "{sensor            |            | sensor size WxH or a name (DVS128, DAVIS240, DAVIS346) when the format has none}"
     "{left-camera-value | 0          | the camera column's value that means left, in text recordings}"
+    "{right-time-offset-ms | 0       | added to the right camera's timestamps: two recordings whose clocks differ}"
     "{mode              | coupled    | coupled, decoupled, fixed or sgbm}"
     "{min-disparity     | 0          | smallest disparity searched [px]}"
     "{max-disparity     | 40         | largest disparity searched [px]}"
@@ -90,6 +91,7 @@ bool parse(int argc, char** argv, Options& o)
     if (cmd.has("sensor"))
         o.sensor = parseSensorSize(cmd.get<std::string>("sensor"));
     o.leftCameraValue = cmd.get<int>("left-camera-value");
+    o.rightTimeOffsetMs = cmd.get<double>("right-time-offset-ms");
     o.mode = cmd.get<std::string>("mode");
     o.minDisparity = cmd.get<int>("min-disparity");
     o.maxDisparity = cmd.get<int>("max-disparity");
@@ -129,6 +131,7 @@ public:
             return;
         }
         cap_.set(EVENT_CAP_PROP_TEXT_LEFT_CAMERA_VALUE, o.leftCameraValue);
+        cap_.set(EVENT_CAP_PROP_RIGHT_TIME_OFFSET_US, o.rightTimeOffsetMs * 1000);
         cap_.set(EVENT_CAP_PROP_SENSOR_WIDTH, o.sensor.width);
         cap_.set(EVENT_CAP_PROP_SENSOR_HEIGHT, o.sensor.height);
         cap_.set(EVENT_CAP_PROP_WINDOW_US, o.frameMs * 1000);
@@ -273,7 +276,7 @@ public:
             return;
         for (const Event& e : packet)
         {
-            if (first_ < 0)
+            if (events_.empty())
                 first_ = e.t;
             const int64 span = e.t - first_;
             if ((span > 2000000 && events_.size() >= 20000) || span > 20000000 || events_.size() >= 2000000)
@@ -316,6 +319,8 @@ private:
             rowResult_ = disparityResult_ = "not estimated (too few events)";
             return;
         }
+        if (!camerasOverlap())
+            return;
         if (!calibration_.imageSize.empty())
             rectify();
         estimateDisparity();
@@ -325,6 +330,23 @@ private:
             estimateRows();
         events_.clear();
         events_.shrink_to_fit();
+    }
+
+    // A pair whose cameras' streams do not overlap in time has nothing to match: one camera fired nothing, or
+    // two recordings' clocks are apart (each started its own).
+    bool camerasOverlap()
+    {
+        size_t count[2] = { 0, 0 };
+        for (const Event& e : events_)
+            count[e.camera ? 1 : 0]++;
+        if (std::min(count[0], count[1]) * 100 >= std::max(count[0], count[1]))
+            return true;
+        rowResult_ = disparityResult_ = cv::format("not estimated (left %zu events, right %zu)", count[0], count[1]);
+        std::cerr << "\nevent_stereo: warning: over the " << span() << " the left camera has " << count[0]
+                  << " events and the right one " << count[1] << ": the two streams do not overlap in time (a camera "
+                  << "that fires nothing, or two recordings whose clocks are apart; --right-time-offset-ms shifts the "
+                  << "right camera's clock)\n";
+        return false;
     }
 
     void estimateRows()
@@ -402,7 +424,7 @@ private:
     std::string swapAdvice_;
     StereoCalibration calibration_;
     std::vector<Event> events_;
-    int64 first_ = -1, spanUs_ = 0;
+    int64 first_ = 0, spanUs_ = 0;
     bool done_ = false;
     std::string rowResult_, disparityResult_;
 };
