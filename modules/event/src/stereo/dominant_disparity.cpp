@@ -53,18 +53,29 @@ public:
             for (int c = 0; c < 2; c++)
             {
                 dilate(marks_[c], spread[c], column);
-                spread[c].convertTo(spread[c], CV_32F);
                 Mat sums;
                 reduce(spread[c], sums, 0, REDUCE_SUM, CV_64F);
                 for (int x = 0; x < size_.width; x++)
                     columns_[c][(size_t)x] += sums.at<double>(0, x);
             }
-            for (int d = -maxDisparity_; d <= maxDisparity_; d++)
+            // Pixels marked in both images, per disparity, visited from the left image's marked pixels: the
+            // work grows with the events, not with the sensor's area.
+            const int width = size_.width, reach = maxDisparity_;
+            findNonZero(spread[0], marked_);
+            both_.assign((size_t)(2 * reach + 1), 0);
+            for (const Point& q : marked_)
             {
-                const int x0 = std::max(0, d), width = size_.width - std::abs(d);
-                const size_t k = (size_t)(d + maxDisparity_);
-                sums_.both[k] += spread[0](Rect(x0, 0, width, size_.height)).dot(spread[1](Rect(x0 - d, 0, width, size_.height)));
-                sums_.pixels[k] += (double)width * size_.height;
+                const uchar* right = spread[1].ptr<uchar>(q.y);
+                // Left x against right x - d, where both lie on the sensor.
+                const int dLow = std::max(-reach, q.x - width + 1), dHigh = std::min(reach, q.x);
+                for (int d = dLow; d <= dHigh; d++)
+                    both_[(size_t)(d + reach)] += right[q.x - d];
+            }
+            for (int d = -reach; d <= reach; d++)
+            {
+                const size_t k = (size_t)(d + reach);
+                sums_.both[k] += (double)both_[k];
+                sums_.pixels[k] += (double)(width - std::abs(d)) * size_.height;
             }
         }
         for (int c = 0; c < 2; c++)
@@ -108,6 +119,8 @@ private:
     int64 count_[2] = { 0, 0 };
     std::vector<double> columns_[2];  // per column, the marked pixels of all compared slices
     ShiftSums sums_;
+    std::vector<Point> marked_;       // working memory of endSlice()
+    std::vector<int64> both_;
 };
 
 }  // namespace
