@@ -303,7 +303,7 @@ public:
     std::string span()
     {
         estimate();
-        return cv::format("first %.1f s", (double)spanUs_ * 1e-6);
+        return spanText();
     }
 
 private:
@@ -315,21 +315,24 @@ private:
         if (!events_.empty())
             spanUs_ = events_.back().t - events_.front().t;
         if (events_.size() < 2000)
-        {
             rowResult_ = disparityResult_ = "not estimated (too few events)";
-            return;
+        else if (camerasOverlap())
+        {
+            if (!calibration_.imageSize.empty())
+                rectify();
+            estimateDisparity();
+            if (size_.width < 3 * maxDisparity_ / 2 + 12)
+                rowResult_ = "not estimated (too narrow a sensor for the disparity range)";
+            else
+                estimateRows();
         }
-        if (!camerasOverlap())
-            return;
-        if (!calibration_.imageSize.empty())
-            rectify();
-        estimateDisparity();
-        if (size_.width < 3 * maxDisparity_ / 2 + 12)
-            rowResult_ = "not estimated (too narrow a sensor for the disparity range)";
-        else
-            estimateRows();
         events_.clear();
         events_.shrink_to_fit();
+    }
+
+    std::string spanText() const
+    {
+        return cv::format("first %.1f s", (double)spanUs_ * 1e-6);
     }
 
     // A pair whose cameras' streams do not overlap in time has nothing to match: one camera fired nothing, or
@@ -342,7 +345,7 @@ private:
         if (std::min(count[0], count[1]) * 100 >= std::max(count[0], count[1]))
             return true;
         rowResult_ = disparityResult_ = cv::format("not estimated (left %zu events, right %zu)", count[0], count[1]);
-        std::cerr << "\nevent_stereo: warning: over the " << span() << " the left camera has " << count[0]
+        std::cerr << "\nevent_stereo: warning: over the " << spanText() << " the left camera has " << count[0]
                   << " events and the right one " << count[1] << ": the two streams do not overlap in time (a camera "
                   << "that fires nothing, or two recordings whose clocks are apart; --right-time-offset-ms shifts the "
                   << "right camera's clock)\n";
