@@ -192,7 +192,8 @@ TEST(Event_Lifetime, simulated_moving_line_lifetimes_against_ground_truth)
 // seen by the realistic scenes' sensor (boxes: threshold spread, 0.5 ms refractory period, latency and jitter,
 // noise) on a 64 x 32 crop. Returns the median ratio of the estimated lifetimes to the closed form 1 / speed
 // over the signal events after the first 20 px of travel, and the share of them with a lifetime.
-std::pair<double, double> barsLifetimeRatio(double speed, double logContrast, double blurPx, double inlierDistance)
+std::pair<double, double> barsLifetimeRatio(double speed, double logContrast, double blurPx, double inlierDistance,
+                                            double timeWindowUs = 100000)
 {
     SimulatorSettings s = StereoEventSimulator::create("boxes")->getSettings();
     s.resolution = Size(64, 32);
@@ -216,6 +217,7 @@ std::pair<double, double> barsLifetimeRatio(double speed, double logContrast, do
     Ptr<StereoEventSimulator> sim = StereoEventSimulator::create(planes, s);
     Ptr<LifetimeEstimator> est = LifetimeEstimator::create(s.resolution);
     est->setInlierDistance(inlierDistance);
+    est->setTimeWindow(timeWindowUs);
     const LeftCameraEvents run = generateLeftCamera(*sim, travel / speed * 1e6);
     const std::vector<Event>& left = run.events;
     Mat lifetimes;
@@ -257,10 +259,34 @@ TEST(Event_Lifetime, fast_edges_get_the_closed_form_lifetime)
             EXPECT_GT(scaled.second, 0.95) << b.name << " " << speed << " px/s";
             // Where the fixed threshold fails: the test shows the bias it was written for.
             if (speed == 3333 && b.blurPx == 0)
+            {
                 EXPECT_GT(fixed.first, 2.0);
+            }
             if (speed == 1000 && b.blurPx > 0)
+            {
                 EXPECT_LT(fixed.first, 0.8);
+            }
         }
+}
+
+TEST(Event_Lifetime, half_firing_edges_need_a_time_window_shorter_than_the_crossings)
+{
+    // Log contrast 0.35 against thresholds of 0.25 with the sensor's spread: about half the pixels fire on each
+    // crossing. The 5 x 5 window then holds more timestamps of the bar before (12 px earlier, 12 lifetimes
+    // older) than of the current edge, and the best plane runs through them: lifetimes a whole number of
+    // crossings too long. A time window shorter than the time between two bars' crossings (8 px of travel
+    // here) leaves only the current edge: the closed form again, for the events with enough of it to fit.
+    for (double speed : { 3333.0, 1000.0 })  // 0.3 and 1 ms/px
+    {
+        const std::pair<double, double> whole = barsLifetimeRatio(speed, 0.35, 0, 0.75);
+        const std::pair<double, double> short_ = barsLifetimeRatio(speed, 0.35, 0, 0.75, 8 / speed * 1e6);
+        std::cout << format("half-firing bars at %.1f ms/px: median lifetime / closed form %.2f with the 100 ms "
+                            "window (%.1f %% with a lifetime), %.2f with 8 px of travel (%.1f %%)", 1000 / speed,
+                            whole.first, 100 * whole.second, short_.first, 100 * short_.second) << std::endl;
+        EXPECT_GT(whole.first, 5.0) << speed << " px/s";  // the bias: planes through the bar before
+        EXPECT_NEAR(1.0, short_.first, 0.1) << speed << " px/s";
+        EXPECT_GT(short_.second, 0.15) << speed << " px/s";
+    }
 }
 
 TEST(Event_Lifetime, simulated_background_activity_is_classified_as_noise)
