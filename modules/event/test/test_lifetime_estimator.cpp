@@ -279,13 +279,13 @@ TEST(Event_Lifetime, half_firing_edges_need_a_time_window_shorter_than_the_cross
     for (double speed : { 3333.0, 1000.0 })  // 0.3 and 1 ms/px
     {
         const std::pair<double, double> whole = barsLifetimeRatio(speed, 0.35, 0, 0.75);
-        const std::pair<double, double> short_ = barsLifetimeRatio(speed, 0.35, 0, 0.75, 8 / speed * 1e6);
+        const std::pair<double, double> windowed = barsLifetimeRatio(speed, 0.35, 0, 0.75, 8 / speed * 1e6);
         std::cout << format("half-firing bars at %.1f ms/px: median lifetime / closed form %.2f with the 100 ms "
                             "window (%.1f %% with a lifetime), %.2f with 8 px of travel (%.1f %%)", 1000 / speed,
-                            whole.first, 100 * whole.second, short_.first, 100 * short_.second) << std::endl;
+                            whole.first, 100 * whole.second, windowed.first, 100 * windowed.second) << std::endl;
         EXPECT_GT(whole.first, 5.0) << speed << " px/s";  // the bias: planes through the bar before
-        EXPECT_NEAR(1.0, short_.first, 0.1) << speed << " px/s";
-        EXPECT_GT(short_.second, 0.15) << speed << " px/s";
+        EXPECT_NEAR(1.0, windowed.first, 0.1) << speed << " px/s";
+        EXPECT_GT(windowed.second, 0.15) << speed << " px/s";
     }
 }
 
