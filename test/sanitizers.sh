@@ -43,6 +43,7 @@ accuracy_only+=':StereoEventMatcher_Confidence.temporal_prior_raises_the_matchin
 accuracy_only+=':StereoEventMatcher_Confidence.rejection_is_the_threshold_and_the_confidence_ranks_the_estimates'
 accuracy_only+=':StereoEventMatcher_LookAhead.raises_the_matching_rate_on_low_contrast'
 accuracy_only+=':Event_RowAlignment.finds_the_simulated_row_offset_and_roll'
+accuracy_only+=':StereoEventMatcher.coupled_lifetimes_passed_on_without_limit_keep_the_start_up_ones'
 "$build/modules/event/opencv_test_event" --gtest_filter="-$accuracy_only"
 echo "== sanitizers: samples on the simulator and on every real recording"
 work=$(mktemp -d)
