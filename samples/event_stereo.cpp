@@ -68,7 +68,7 @@ const char* const keys =
     "{min-disparity     | 0          | smallest disparity searched [px]}"
     "{max-disparity     | 40         | largest disparity searched [px]}"
     "{frame-ms          | 33         | window of one video frame [ms]}"
-    "{threads           | 1          | row bands on their own threads (the same results; faster only where the events spread over all rows); 0: the CPUs, at most 4}"
+    "{threads           | 1          | row bands on their own threads (the same results; on two cores no faster, Threads in doc/stereo.md); 0: the CPUs, at most 4}"
     "{no-csv            | false      | do not write events.csv}"
     "{all-frames        | false      | a PNG for every window, not a handful}"
     "{output            | output/event_stereo | output folder}"
