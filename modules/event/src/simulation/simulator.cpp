@@ -68,6 +68,22 @@ struct PlanePose
     Vec3d pivot, pivotVelocity, angularVelocity;
 };
 
+// A plane at one render, from one camera (StereoEventSimulatorImpl::planeInView()). A ray with direction d
+// (d.z = 1) can only hit the plane's rectangle within the box of its corners' directions, when the corners
+// lie in front of the camera.
+struct PlaneInView
+{
+    double distance = 0;  // n . (c - origin): a ray's depth at the plane is distance / (n . d)
+    float uniformLogI = 0;
+    bool bounded = false;
+    double lo[2] = { std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity() };
+    double hi[2] = { -std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity() };
+    bool mayHit(const Vec3d& d) const
+    {
+        return !bounded || (d[0] >= lo[0] && d[0] <= hi[0] && d[1] >= lo[1] && d[1] <= hi[1]);
+    }
+};
+
 using SimulatedEvent = std::pair<Event, std::array<float, 6>>;
 
 bool earlierEvent(const SimulatedEvent& a, const SimulatedEvent& b)
@@ -246,6 +262,35 @@ private:
         return q;
     }
 
+    // What every pixel's ray shares for one plane at one render: the numerator of its depth, the plane's
+    // rectangle as seen from the camera (a bounding box of its corners' directions) and a uniform plane's log
+    // intensity. Most planes cover a small part of the view, so most rays skip them after four comparisons.
+    static PlaneInView planeInView(const SimulatedPlane& p, const PlanePose& q, const Vec3d& origin)
+    {
+        PlaneInView view;
+        view.distance = q.n.dot(q.c - origin);
+        view.uniformLogI = (float)std::log(std::max(p.intensity, 1e-4));
+        for (int corner = 0; corner < 4; corner++)
+        {
+            const Vec3d r = q.c + ((corner & 1) ? 1.0 : -1.0) * p.halfSize[0] * q.u +
+                            ((corner & 2) ? 1.0 : -1.0) * p.halfSize[1] * q.v - origin;
+            if (!(r[2] > 1e-3))
+                return view;  // a corner near or behind the camera: no box, every ray is tested
+            view.lo[0] = std::min(view.lo[0], r[0] / r[2]);
+            view.hi[0] = std::max(view.hi[0], r[0] / r[2]);
+            view.lo[1] = std::min(view.lo[1], r[1] / r[2]);
+            view.hi[1] = std::max(view.hi[1], r[1] / r[2]);
+        }
+        // The margin (about 1e-4 px) keeps the box conservative against the rounding of the hit test.
+        for (int j = 0; j < 2; j++)
+        {
+            view.lo[j] -= 1e-6;
+            view.hi[j] += 1e-6;
+        }
+        view.bounded = true;
+        return view;
+    }
+
     double texture(const SimulatedPlane& p, const PlanePose& q, double a, double b) const
     {
         if (p.texture == TEXTURE_UNIFORM)
@@ -272,8 +317,12 @@ private:
         const double flickerWave = flickering_ ? std::sin(2 * CV_PI * s_.flickerFrequencyHz * tUs * 1e-6) : 0.0;
         const double cr = std::cos(s_.rightRollRad), sr = std::sin(s_.rightRollRad);
         std::vector<PlanePose> poses;
+        std::vector<PlaneInView> views;
         for (const SimulatedPlane& p : planes_)
+        {
             poses.push_back(pose(p, tUs));
+            views.push_back(planeInView(p, poses.back(), origin));
+        }
         const int n = sz.area();
         out.logI.resize(n);
         out.depth.resize(n);
@@ -293,16 +342,19 @@ private:
                     const double rx = x - cx, ry = y - cy - s_.rightRowOffset;
                     d = Vec3d((cr * rx + sr * ry) / f, (-sr * rx + cr * ry) / f, 1.0);
                 }
-                double best = std::numeric_limits<double>::infinity(), value = 0;
+                double best = std::numeric_limits<double>::infinity(), hitA = 0, hitB = 0;
                 int hit = -1;
                 Vec3d point;
                 for (size_t k = 0; k < planes_.size(); k++)
                 {
+                    const PlaneInView& view = views[k];
+                    if (!view.mayHit(d))
+                        continue;
                     const PlanePose& q = poses[k];
                     const double denom = q.n.dot(d);
                     if (std::abs(denom) < 1e-12)
                         continue;
-                    const double s = q.n.dot(q.c - origin) / denom;  // depth along +Z, since d.z = 1
+                    const double s = view.distance / denom;  // depth along +Z, since d.z = 1
                     if (s <= 1e-6 || s >= best)
                         continue;
                     const Vec3d pt = origin + s * d;
@@ -312,7 +364,8 @@ private:
                     best = s;
                     hit = (int)k;
                     point = pt;
-                    value = texture(planes_[k], q, a, b);
+                    hitA = a;
+                    hitB = b;
                 }
                 const int i = y * sz.width + x;
                 if (hit < 0)
@@ -322,7 +375,9 @@ private:
                     out.flowX[i] = out.flowY[i] = 0;
                     continue;
                 }
-                out.logI[i] = (float)std::log(std::max(value, 1e-4));
+                out.logI[i] = planes_[hit].texture == TEXTURE_UNIFORM
+                                  ? views[hit].uniformLogI
+                                  : (float)std::log(std::max(texture(planes_[hit], poses[hit], hitA, hitB), 1e-4));
                 if (flickering_ && planes_[hit].flickerDepth > 0)
                 {
                     out.flickerLogI[i] = (float)std::log(1 + planes_[hit].flickerDepth * flickerWave);
