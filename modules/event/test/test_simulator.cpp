@@ -143,6 +143,77 @@ TEST(Event_Simulator, background_activity_rate_and_flags)
         ASSERT_EQ(GT_FLAG_NOISE, (int)gt.at<float>(i, GT_FLAGS));
 }
 
+// A ray's depth at a rectangle (centre c, orientation r as a Rodrigues vector, half sizes h) from o along d
+// (d.z = 1), or 0 when it misses: the plane n . (X - c) = 0 met at o + s d, inside |u . (X - c)| <= h.x and
+// |v . (X - c)| <= h.y. `edge` is set when the hit lies within 1e-9 m of the border (where rounding decides).
+double rectangleDepth(const SimulatedPlane& p, const Vec3d& o, const Vec3d& d, bool& edge)
+{
+    // The plane's axes: x, y and z turned by its rotation vector (Rodrigues' formula).
+    const double angle = cv::norm(p.rotation);
+    const Vec3d k = angle > 0 ? p.rotation * (1.0 / angle) : Vec3d(0, 0, 1);
+    const auto turned = [&](const Vec3d& a) {
+        return a * std::cos(angle) + k.cross(a) * std::sin(angle) + k * (k.dot(a) * (1 - std::cos(angle)));
+    };
+    const Vec3d u = turned(Vec3d(1, 0, 0)), v = turned(Vec3d(0, 1, 0)), n = turned(Vec3d(0, 0, 1));
+    const double s = n.dot(p.center - o) / n.dot(d);
+    if (!(s > 1e-6))
+        return 0;
+    const Vec3d q = o + s * d - p.center;
+    const double a = std::abs(u.dot(q)) - p.halfSize[0], b = std::abs(v.dot(q)) - p.halfSize[1];
+    edge = edge || (std::abs(a) < 1e-9 && b < 1e-9) || (std::abs(b) < 1e-9 && a < 1e-9);
+    return a <= 0 && b <= 0 ? s : 0;
+}
+
+TEST(Event_Simulator, rendered_depths_of_a_floor_behind_the_camera_and_a_tilted_card_are_their_ray_plane_hits)
+{
+    // A floor 0.5 m below the cameras from 5 m behind them to 15 m ahead (part of it behind the camera: no
+    // box of corner directions bounds it) and a small card turned 0.6 rad about the vertical (its box bounds
+    // it). Every pixel of both cameras against the nearest hit of its ray, computed here.
+    SimulatedPlane floor;
+    floor.center = Vec3d(0, 0.5, 5);
+    floor.halfSize = Vec2d(10, 10);
+    floor.rotation = Vec3d(CV_PI / 2, 0, 0);
+    floor.texture = TEXTURE_UNIFORM;
+    floor.intensity = 0.3;
+    SimulatedPlane card = floor;
+    card.center = Vec3d(0.15, -0.1, 2);
+    card.halfSize = Vec2d(0.2, 0.15);
+    card.rotation = Vec3d(0, 0.6, 0);
+    card.intensity = 0.8;
+    SimulatorSettings settings;
+    Ptr<StereoEventSimulator> sim = StereoEventSimulator::create({ floor, card }, settings);
+    const Size size = settings.resolution;
+    const double f = settings.focalLength, cx = 0.5 * (size.width - 1), cy = 0.5 * (size.height - 1);
+    int onFloor = 0, onCard = 0, compared = 0;
+    for (int camera : { CAMERA_LEFT, CAMERA_RIGHT })
+    {
+        Mat disparity;
+        sim->renderDisparity(camera, disparity);
+        const Vec3d origin(camera == CAMERA_RIGHT ? settings.baseline : 0.0, 0, 0);
+        for (int y = 0; y < size.height; y++)
+            for (int x = 0; x < size.width; x++)
+            {
+                const Vec3d d((x - cx) / f, (y - cy) / f, 1.0);
+                bool edge = false;
+                const double zFloor = rectangleDepth(floor, origin, d, edge), zCard = rectangleDepth(card, origin, d, edge);
+                if (edge)
+                    continue;
+                const double z = zCard > 0 && (zFloor == 0 || zCard < zFloor) ? zCard : zFloor;
+                const float expected = z > 0 ? (float)(f * settings.baseline / z) : 0.f;
+                ASSERT_NEAR(expected, disparity.at<float>(y, x), 1e-4f * std::max(1.f, expected))
+                    << "camera " << camera << " at (" << x << ", " << y << ")";
+                onFloor += z > 0 && z == zFloor;
+                onCard += z > 0 && z == zCard;
+                compared++;
+            }
+    }
+    // Both planes fill a good part of the view: the floor the 83 rows below the horizon out to 15 m (y - cy >=
+    // 0.5 f / 15), the card about 0.33 x 0.3 m at 2 m (33 x 30 px).
+    EXPECT_GT(onFloor, 2 * 240 * 80);
+    EXPECT_GT(onCard, 2 * 900);
+    EXPECT_GT(compared, 2 * size.area() - 100);
+}
+
 TEST(Event_Simulator, occlusion_flags_follow_the_geometry)
 {
     // The "plane" scene fills the view: the leftmost disparity-wide strip of the left image has no
