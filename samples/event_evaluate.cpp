@@ -1,8 +1,8 @@
 // event_evaluate: runs a stereo method on a recording with per-event ground truth and writes a report.
 //
-//   event_evaluate [--scene=NAME --duration-ms=MS | --input=REC [--gt=REC.gt.csv]] [--method=sgbm]
+//   event_evaluate [--scene=NAME --duration-ms=MS | --input=REC [--gt=REC.gt.csv]] [--method=coupled]
 //                  [--window-ms=33] [--output=DIR] [--set=PARAM=VALUE[,PARAM=VALUE...]]
-//   methods: coupled, decoupled, fixed, sgbm (StereoEventMatcher modes), lifetime
+//   methods: coupled (the default), decoupled, fixed, sgbm (StereoEventMatcher modes), lifetime, none
 //
 // Ground truth comes from the simulator (a named scene, simulated in memory) or from the side file that
 // writeSimulatedRecording() writes (`t,x,y,p,camera,depth,disparity,flow_x,flow_y,lifetime,flags`).
@@ -34,6 +34,7 @@
 #include <cstdio>
 #include <fstream>
 #include <iostream>
+#include <sstream>
 
 using namespace cv;
 using namespace cv::event;
@@ -360,7 +361,7 @@ const char* const keys =
     "{duration-ms | 500        | length of the simulated scene [ms]}"
     "{input       |            | a recording with per-event ground truth beside it}"
     "{gt          |            | the ground truth file; default: the recording's name + .gt.csv}"
-    "{method      | sgbm       | coupled, decoupled, fixed, sgbm (StereoEventMatcher modes), lifetime, or none (evaluates --filter alone)}"
+    "{method      | coupled    | coupled, decoupled, fixed, sgbm (StereoEventMatcher modes), lifetime, or none (evaluates --filter alone)}"
     "{filter      |            | a noise filter in front of the method: background_activity, trail, refractory, hot_pixels, anti_flicker}"
     "{filter-set  |            | filter parameters NAME=VALUE, comma separated (FileStorage names, e.g. correlationTime=5000)}"
     "{window-ms   | 33         | evaluation window (and SGBM frame) [ms]}"
@@ -622,27 +623,39 @@ int main(int argc, char** argv)
         const double at75 = precisionAtDensity(acc.ranked, acc.candidates, 75);
         const double atFull = precisionAtDensity(acc.ranked, acc.candidates, fullDensity);
         auto percent = [](double v) { return v < 0 ? std::string("n/a") : cv::format("%.1f %%", v); };
+        // Every key for every method, "n/a" where the method estimates no disparities (as for lifetimes).
+        std::ostringstream disparityMetrics;
+        disparityMetrics << "events_with_disparity," << acc.estimated << "\n"
+                         << "disparity_density_percent," << density << "\n"
+                         << "within_1px_percent," << within1 << "\n"
+                         << "matching_rate_percent," << matchingRate << "\n"
+                         << "left_occluded_percent," << share(acc.leftSignal - acc.leftVisible, acc.leftSignal) << "\n"
+                         << "matching_rate_visible_percent," << share(acc.leftVisibleMatched, acc.leftVisible) << "\n"
+                         << "matching_rate_motion_percent," << share(acc.leftMotionMatched, acc.leftMotion) << "\n"
+                         << "left_wrong_percent," << share(acc.leftWrong, acc.leftSignal) << "\n"
+                         << "left_ambiguous_percent," << share(acc.leftAmbiguous, acc.leftSignal) << "\n"
+                         << "left_no_counterpart_percent," << share(acc.leftNoCounterpart, acc.leftSignal) << "\n"
+                         << "precision_at_50_percent_density," << at50 << "\n"
+                         << "precision_at_75_percent_density," << at75 << "\n"
+                         << "unfiltered_density_percent," << fullDensity << "\n"
+                         << "precision_at_unfiltered_density," << atFull << "\n"
+                         << "mean_abs_disparity_error_px," << mae << "\n"
+                         << "relative_depth_error_percent," << relDepth << "\n";
+        std::string disparityLines = disparityMetrics.str();
+        if (!estimate.hasDisparity)
+        {
+            std::istringstream lines(disparityLines);
+            std::string line, keys;
+            while (std::getline(lines, line))
+                keys += line.substr(0, line.find(',')) + ",n/a\n";
+            disparityLines = keys;
+        }
         std::ofstream csv(o.output + "/metrics.csv");
         csv << "metric,value\n"
             << "events," << acc.events << "\n"
             << "signal_events," << acc.signal << "\n"
             << "non_occluded_signal_events," << acc.candidates << "\n"
-            << "events_with_disparity," << acc.estimated << "\n"
-            << "disparity_density_percent," << density << "\n"
-            << "within_1px_percent," << within1 << "\n"
-            << "matching_rate_percent," << matchingRate << "\n"
-            << "left_occluded_percent," << share(acc.leftSignal - acc.leftVisible, acc.leftSignal) << "\n"
-            << "matching_rate_visible_percent," << share(acc.leftVisibleMatched, acc.leftVisible) << "\n"
-            << "matching_rate_motion_percent," << share(acc.leftMotionMatched, acc.leftMotion) << "\n"
-            << "left_wrong_percent," << share(acc.leftWrong, acc.leftSignal) << "\n"
-            << "left_ambiguous_percent," << share(acc.leftAmbiguous, acc.leftSignal) << "\n"
-            << "left_no_counterpart_percent," << share(acc.leftNoCounterpart, acc.leftSignal) << "\n"
-            << "precision_at_50_percent_density," << at50 << "\n"
-            << "precision_at_75_percent_density," << at75 << "\n"
-            << "unfiltered_density_percent," << fullDensity << "\n"
-            << "precision_at_unfiltered_density," << atFull << "\n"
-            << "mean_abs_disparity_error_px," << mae << "\n"
-            << "relative_depth_error_percent," << relDepth << "\n"
+            << disparityLines
             << "lifetime_median_relative_error_percent," << lifetimeError << "\n"
             << "noise_precision_percent," << precision << "\n"
             << "noise_recall_percent," << recall << "\n"
@@ -666,54 +679,67 @@ int main(int argc, char** argv)
                 << "filter_flicker_removed_percent," << (acc.flicker ? std::to_string(flickerRemoved) : "n/a") << "\n"
                 << "filter_kept_signal_share_percent," << keptPrecision << "\n"
                 << "filter_mev_per_s," << filterMevPerS << "\n";
+        // The report shows what the method estimates: disparities, lifetimes (with noise), both, or neither
+        // (--method=none, for a filter).
+        const bool disparities = estimate.hasDisparity, lifetimes = estimate.hasLifetime;
+        const std::string noiseText = !acc.noiseFlagged && !acc.noiseTrue ? std::string("n/a (no noise, none classified as noise)")
+            : (acc.noiseFlagged ? percent(share(acc.noiseCorrect, acc.noiseFlagged)) : std::string("n/a (none classified as noise)"))
+              + " / " + (acc.noiseTrue ? percent(share(acc.noiseCorrect, acc.noiseTrue)) : std::string("n/a (no noise)"));
         std::ofstream md(o.output + "/report.md");
         md << "# Evaluation: " << o.method << " on " << (sim ? "simulated scene " + o.scene : o.input) << "\n\n"
-           << "Windows of " << o.windowMs << " ms; disparity metrics over non-occluded signal events (ground truth "
-              "flags), both cameras.\n\n"
+           << "Windows of " << o.windowMs << " ms, both cameras. "
+           << (disparities ? "Disparity metrics over the non-occluded signal events (ground-truth flags)."
+                           : "`" + o.method + "` estimates no disparities.")
+           << (lifetimes ? " Lifetimes over the signal events, noise over all." : "") << "\n\n"
            << "| metric | value |\n|---|---|\n"
-           << "| events (signal / noise) | " << acc.events << " (" << acc.signal << " / " << acc.noiseTrue << ") |\n"
-           << "| disparity density (estimated / non-occluded signal) | " << density << " % (" << acc.estimated << " / " << acc.candidates << ") |\n"
-           << "| estimated events within 1 px | " << within1 << " % |\n"
-           << "| matching rate (left signal events within 1 px of the truth / all left signal events) | " << matchingRate
-           << " % (" << acc.leftMatched << " / " << acc.leftSignal << ") |\n"
-           << "| ... over the left signal events the right camera sees (" << share(acc.leftSignal - acc.leftVisible, acc.leftSignal)
-           << " % are occluded: no matcher can match them) | " << share(acc.leftVisibleMatched, acc.leftVisible) << " % ("
-           << acc.leftVisibleMatched << " / " << acc.leftVisible << ") |\n"
-           << "| ... over the left signal events motion caused (" << share(acc.leftSignal - acc.leftMotion, acc.leftSignal)
-           << " % are the flicker's) | " << share(acc.leftMotionMatched, acc.leftMotion) << " % (" << acc.leftMotionMatched
-           << " / " << acc.leftMotion << ") |\n"
-           << "| left signal events more than 1 px off / rejected (ambiguous) / without a candidate | "
-           << share(acc.leftWrong, acc.leftSignal) << " / " << share(acc.leftAmbiguous, acc.leftSignal) << " / "
-           << share(acc.leftNoCounterpart, acc.leftSignal) << " % |\n"
-           << "| precision (within 1 px) of the most confident estimates at 50 / 75 % density | "
-           << (acc.ranked.empty() ? std::string("n/a (" + o.method + " has no confidence)") : percent(at50) + " / " + percent(at75)) << " |\n"
-           << "| ... with no rejection (every event's best estimate): density, precision | "
-           << (acc.ranked.empty() ? std::string("n/a") : percent(fullDensity) + ", " + percent(atFull)) << " |\n"
-           << "| mean absolute disparity error | " << mae << " px |\n"
-           << "| mean relative depth error | " << relDepth << " % |\n"
-           << "| lifetime median relative error | " << lifetimeError << (estimate.hasLifetime ? " %" : " (" + o.method + " estimates no lifetimes)") << " |\n"
-           << "| noise precision / recall | " << precision << " / " << recall << (estimate.hasLifetime ? " %" : " (" + o.method + " does not classify noise)") << " |\n"
-           << "| events with a lifetime (left / right) | " << acc.withLifetime << " (" << acc.withLifetimeCamera[0]
-           << " / " << acc.withLifetimeCamera[1] << ") |\n"
-           << "| time per event | " << usPerEvent << " us |\n";
+           << "| events (signal / noise) | " << acc.events << " (" << acc.signal << " / " << acc.noiseTrue << ") |\n";
+        if (disparities)
+            md << "| disparity density (estimated / non-occluded signal) | " << density << " % (" << acc.estimated << " / " << acc.candidates << ") |\n"
+               << "| estimated events within 1 px | " << within1 << " % |\n"
+               << "| matching rate (left signal events within 1 px of the truth / all left signal events) | " << matchingRate
+               << " % (" << acc.leftMatched << " / " << acc.leftSignal << ") |\n"
+               << "| ... over the left signal events the right camera sees (" << share(acc.leftSignal - acc.leftVisible, acc.leftSignal)
+               << " % are occluded: no matcher can match them) | " << share(acc.leftVisibleMatched, acc.leftVisible) << " % ("
+               << acc.leftVisibleMatched << " / " << acc.leftVisible << ") |\n"
+               << "| ... over the left signal events motion caused (" << share(acc.leftSignal - acc.leftMotion, acc.leftSignal)
+               << " % are the flicker's) | " << share(acc.leftMotionMatched, acc.leftMotion) << " % (" << acc.leftMotionMatched
+               << " / " << acc.leftMotion << ") |\n"
+               << "| left signal events more than 1 px off / rejected (ambiguous) / without a candidate | "
+               << share(acc.leftWrong, acc.leftSignal) << " / " << share(acc.leftAmbiguous, acc.leftSignal) << " / "
+               << share(acc.leftNoCounterpart, acc.leftSignal) << " % |\n"
+               << "| precision (within 1 px) of the most confident estimates at 50 / 75 % density | "
+               << (acc.ranked.empty() ? std::string("n/a (" + o.method + " has no confidence)") : percent(at50) + " / " + percent(at75)) << " |\n"
+               << "| ... with no rejection (every event's best estimate): density, precision | "
+               << (acc.ranked.empty() ? std::string("n/a") : percent(fullDensity) + ", " + percent(atFull)) << " |\n"
+               << "| mean absolute disparity error | " << mae << " px |\n"
+               << "| mean relative depth error | " << relDepth << " % |\n";
+        if (lifetimes)
+            md << "| lifetime median relative error | " << lifetimeError << (acc.lifetimeRelErrors.empty() ? "" : " %") << " |\n"
+               << "| noise precision / recall | " << noiseText << " |\n"
+               << "| events with a lifetime (left / right) | " << acc.withLifetime << " (" << acc.withLifetimeCamera[0]
+               << " / " << acc.withLifetimeCamera[1] << ") |\n";
+        md << "| time per event | " << usPerEvent << " us |\n";
         if (filter)
             md << "| filter " << o.filter << ": signal kept / noise removed / signal share of the kept events | "
                << signalKept << " / " << noiseRemoved << " / " << keptPrecision << " % (" << noiseEvents << " noise events) |\n"
                << "| filter " << o.filter << ": flicker removed | "
                << (acc.flicker ? cv::format("%.2f %% of %lld flicker events", flickerRemoved, (long long)acc.flicker) : std::string("n/a (no flicker)")) << " |\n"
                << "| filter speed | " << filterMevPerS << " Mev/s |\n";
-        md << "\n"
-           << "![error histogram](disparity_error_histogram.png)\n\n"
-           << "![estimate | ground truth](disparity_vs_truth.png)\n";
-        if (!acc.ranked.empty())
+        if (disparities)
         {
-            drawDensityPrecision(acc.ranked, acc.candidates, density, within1, o.output + "/density_precision.png",
-                                 "precision against density, ranked by confidence (" + o.method + ")");
-            md << "\n![density-precision curve](density_precision.png)\n";
+            md << "\n"
+               << "![error histogram](disparity_error_histogram.png)\n\n"
+               << "![estimate | ground truth](disparity_vs_truth.png)\n";
+            if (!acc.ranked.empty())
+            {
+                drawDensityPrecision(acc.ranked, acc.candidates, density, within1, o.output + "/density_precision.png",
+                                     "precision against density, ranked by confidence (" + o.method + ")");
+                md << "\n![density-precision curve](density_precision.png)\n";
+            }
+            drawHistogram(acc.errorHistogram, o.output + "/disparity_error_histogram.png",
+                          "|disparity error| histogram, 0.25 px bins (" + o.method + ")");
         }
-        drawHistogram(acc.errorHistogram, o.output + "/disparity_error_histogram.png",
-                      "|disparity error| histogram, 0.25 px bins (" + o.method + ")");
-        if (estimate.hasLifetime)
+        if (lifetimes)
         {
             std::vector<int> h(41, 0);  // relative lifetime error in 2.5 % bins up to 100 %
             for (double r : acc.lifetimeRelErrors)
@@ -722,11 +748,14 @@ int main(int argc, char** argv)
                           "|lifetime error| / true lifetime, 2.5 % bins, last bin >= 100 % (" + o.method + ")", "100 %");
             md << "\n![lifetime error histogram](lifetime_error_histogram.png)\n";
         }
-        const float maxDisparity = 48;
-        Mat pair;
-        hconcat(colourDisparity(lastEstimate, maxDisparity), colourDisparity(lastTruth, maxDisparity), pair);
-        resize(pair, pair, Size(), 2, 2, INTER_NEAREST);
-        imwrite(o.output + "/disparity_vs_truth.png", pair);
+        if (disparities)
+        {
+            const float maxDisparity = 48;
+            Mat pair;
+            hconcat(colourDisparity(lastEstimate, maxDisparity), colourDisparity(lastTruth, maxDisparity), pair);
+            resize(pair, pair, Size(), 2, 2, INTER_NEAREST);
+            imwrite(o.output + "/disparity_vs_truth.png", pair);
+        }
         if (!filterPicture.empty())
         {
             imwrite(o.output + "/filter_before_after.png", filterPicture);
@@ -738,8 +767,13 @@ int main(int argc, char** argv)
             std::cout << ", signal share of kept " << keptPrecision << " %, "
                       << filterMevPerS << " Mev/s\n";
         }
-        std::cout << "density " << density << " %, within 1 px " << within1 << " %, MAE " << mae << " px, "
-                  << usPerEvent << " us/event; report in " << o.output << "/report.md\n";
+        if (disparities)
+            std::cout << "density " << density << " %, within 1 px " << within1 << " %, matching rate " << matchingRate
+                      << " %, MAE " << mae << " px, ";
+        if (lifetimes)
+            std::cout << "lifetime median relative error " << lifetimeError << (acc.lifetimeRelErrors.empty() ? "" : " %")
+                      << ", " << acc.withLifetime << " of " << acc.events << " events with a lifetime, ";
+        std::cout << usPerEvent << " us/event; report in " << o.output << "/report.md\n";
         return 0;
     }
     catch (const std::exception& e)

@@ -273,7 +273,14 @@ TEST(Event_Simulator, recording_round_trip_through_event_writer_and_ground_truth
                                   &disparity, &fx, &fy, &lifetime, &flags)) << line;
         ASSERT_LT(rows, expected.size());
         EXPECT_EQ(expected[rows], Event(t, x, y, p, c));
-        EXPECT_NEAR(gt.at<float>((int)rows, GT_DISPARITY), disparity, 1e-3);
+        // The file holds the simulator's floats exactly.
+        const float* truth = gt.ptr<float>((int)rows);
+        ASSERT_EQ(truth[GT_DEPTH], depth) << line;
+        ASSERT_EQ(truth[GT_DISPARITY], disparity) << line;
+        ASSERT_EQ(truth[GT_FLOW_X], fx) << line;
+        ASSERT_EQ(truth[GT_FLOW_Y], fy) << line;
+        ASSERT_EQ(truth[GT_LIFETIME], lifetime) << line;
+        ASSERT_EQ((int)truth[GT_FLAGS], flags) << line;
         rows++;
     }
     EXPECT_EQ(expected.size(), rows);
