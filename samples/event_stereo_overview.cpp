@@ -1,6 +1,6 @@
-// Stereo recording overview: reads a stereo event recording, renders left | right time surfaces and
-// event-count frames every few windows, and writes a summary (events per camera, rates, and the dominant
-// disparity found by correlating the two cameras' accumulated event frames along the rows).
+// Stereo recording overview: reads a stereo event recording, renders left | right time surfaces every few
+// windows, and writes a summary (events per camera, rates, and the dominant disparity: the disparity at which
+// most windows' events line up, estimateDominantDisparity(), with a warning when the cameras look exchanged).
 //
 //   event_stereo_overview [--input=FILE | --left=FILE --right=FILE] [--sensor=128x128]
 //                         [--left-camera-value=1] [--window-ms=33] [--max-disparity=40] [--output=DIR]
@@ -27,6 +27,9 @@ using namespace cv::event;
 
 namespace {
 
+// Below this correlation a window's events do not say where they line up (estimateDominantDisparity()).
+const double kMinLineUpScore = 0.1;
+
 struct Options
 {
     std::string input, left, right, output, scene;
@@ -43,7 +46,7 @@ const char* const keys =
     "{sensor            |            | sensor size WxH or a name (DVS128, DAVIS240, DAVIS346) when the format has none}"
     "{left-camera-value | 0          | the camera column's value that means left, in text recordings}"
     "{window-ms         | 33         | window of one picture [ms]}"
-    "{max-disparity     | 40         | largest disparity searched by the frame correlation [px]}"
+    "{max-disparity     | 40         | largest disparity searched by the correlation, either way [px]}"
     "{output            | output     | output folder}"
     "{scene             | two_planes | simulated scene when no input is given: plane, two_planes, moving_line, cluttered}"
     "{simulate-ms       | 1000       | length of the simulated scene [ms]}";
@@ -79,27 +82,6 @@ Mat renderSurface(const EventSurface& s, int64 t, double tau)
     Mat zero = Mat::zeros(on.size(), CV_8U), bgr;
     merge(std::vector<Mat>{ off, zero, on }, bgr);
     return bgr;
-}
-
-// Row-wise correlation of the two cameras' event-count frames: the disparity that best aligns them.
-int bestDisparity(const Mat& left, const Mat& right, int maxDisparity, double& score)
-{
-    Mat l, r;
-    left.convertTo(l, CV_32F);
-    right.convertTo(r, CV_32F);
-    int best = -1;
-    score = 0;
-    for (int d = 0; d <= maxDisparity && d < l.cols; d++)
-    {
-        const Mat a = l.colRange(d, l.cols), b = r.colRange(0, r.cols - d);
-        const double s = a.dot(b) / std::max(1.0, (double)a.total());
-        if (s > score)
-        {
-            score = s;
-            best = d;
-        }
-    }
-    return best;
 }
 
 Mat upscale(const Mat& m, int factor)
@@ -143,6 +125,7 @@ int main(int argc, char** argv)
         if (size.empty())
             throw std::runtime_error(cap.getSource() + ": the format does not give the sensor size; pass --sensor WxH");
 
+        const int reach = std::max(1, std::min(opt.maxDisparity, size.width / 2));
         Ptr<EventSurface> surface[2] = { EventSurface::create(size), EventSurface::create(size) };
         std::map<int, int> disparityVotes;
         int64 counts[2][2] = { { 0, 0 }, { 0, 0 } };
@@ -164,24 +147,19 @@ int main(int argc, char** argv)
                 counts[e.camera][e.p]++;
             }
             for (int c = 0; c < 2; c++)
-            {
-                surface[c]->clearCounts();
                 surface[c]->update(side[c]);
-            }
             if (side[0].size() > 50 && side[1].size() > 50)
             {
-                Mat cl, cr;
-                surface[0]->renderEventCount(cl);
-                surface[1]->renderEventCount(cr);
-                double score;
-                const int d = bestDisparity(cl, cr, opt.maxDisparity, score);
-                if (d >= 0)
+                // Both ways: a pair given the wrong way round lines up at a negative disparity.
+                double score = 0;
+                const int d = estimateDominantDisparity(packet, size, reach, noArray(), &score);
+                if (score >= kMinLineUpScore)
                     disparityVotes[d]++;
             }
             const int64 now = (int64)cap.get(EVENT_CAP_PROP_POS_US);
             if (windows % pictureEvery == 0 && !packet.empty())
             {
-                Mat row, counts0, counts1;
+                Mat row;
                 hconcat(renderSurface(*surface[0], now, opt.windowMs * 1000), renderSurface(*surface[1], now, opt.windowMs * 1000), row);
                 char name[64];
                 std::snprintf(name, sizeof(name), "/surfaces_%05lld.png", (long long)picturesWritten++);
@@ -196,15 +174,37 @@ int main(int argc, char** argv)
         const double span = cap.get(EVENT_CAP_PROP_POS_US) - first;
         progress.finish(cap.get(EVENT_CAP_PROP_PROGRESS), format("%s: %.0f events", cap.getSource().c_str(), delivered));
 
-        int dominant = -1, votes = 0, totalVotes = 0;
+        // The disparity most windows' events line up at and the runner-up: a scene at two depths shows both.
+        int dominant = 0, votes = 0, next = 0, nextVotes = 0, totalVotes = 0;
         for (const auto& kv : disparityVotes)
         {
             totalVotes += kv.second;
             if (kv.second > votes)
             {
+                next = dominant;
+                nextVotes = votes;
                 votes = kv.second;
                 dominant = kv.first;
             }
+            else if (kv.second > nextVotes)
+            {
+                next = kv.first;
+                nextVotes = kv.second;
+            }
+        }
+        std::string lineUp = totalVotes ? cv::format("%d px (%d of %d windows", dominant, votes, totalVotes)
+                                        : std::string("not estimated (no window whose events line up)");
+        if (totalVotes)
+            lineUp += nextVotes ? cv::format("; next %d px, %d)", next, nextVotes) : std::string(")");
+        if (totalVotes && dominant < 0)
+        {
+            const std::string advice = !opt.left.empty() ? "exchange --left and --right"
+                : cap.getBackendName() == "TEXT" ? cv::format("give --left-camera-value=%d", 1 - opt.leftCameraValue)
+                                                 : "exchange the left and right cameras";
+            lineUp += "; the right camera sees the scene to the right of the left one: the cameras look exchanged; "
+                      + advice;
+            std::cerr << "event_stereo_overview: warning: the events line up at " << dominant
+                      << " px: the cameras look exchanged; " << advice << "\n";
         }
         std::ofstream summary(opt.output + "/summary.md");
         std::ostringstream text;
@@ -219,8 +219,7 @@ int main(int argc, char** argv)
              << "| event rate | " << delivered / std::max(1e-9, span / 1e6) / 1e3 << " kev/s |\n"
              << "| rejected outside sensor / time steps back | " << cap.get(EVENT_CAP_PROP_REJECTED_OUTSIDE) << " / "
              << cap.get(EVENT_CAP_PROP_TIME_BACKWARDS) << " |\n"
-             << "| dominant disparity (event-frame correlation) | " << dominant << " px (" << votes << " of "
-             << totalVotes << " windows) |\n"
+             << "| dominant disparity (estimateDominantDisparity per window) | " << lineUp << " |\n"
              << "| processing | " << seconds << " s, " << delivered / std::max(1e-9, seconds) / 1e6 << " Mev/s |\n"
              << "| pictures | " << picturesWritten << " x surfaces_NNNNN.png (left | right time surfaces, ON red, OFF blue) |\n";
         summary << text.str();
