@@ -1,11 +1,12 @@
 // event_player: plays any supported recording as video, as time surfaces or as event-count frames.
 //
 //   event_player FILE [--mode=surface|frames] [--window-ms=33] [--tau-ms=30] [--output=DIR] [--video=FILE.avi]
-//                     [--show] [--start-ms=T] [--max-frames=N] [--sensor=WxH|NAME] [--one-based]
+//                     [--show] [--start-ms=T] [--max-frames=N] [--zoom=N] [--sensor=WxH|NAME] [--one-based]
 //                     [--filter=NAME [--filter-set=NAME=VALUE,...]]
 //
 // Frames go to DIR/frame_NNNNN.png (default), to an MJPG video with --video, and/or to a window with --show.
-// Stereo recordings are shown left | right. With --filter, only the events a noise filter keeps are shown.
+// Stereo recordings are shown left | right. Small sensors are enlarged (a DVS128 four times) so that single
+// pixels stay visible. With --filter, only the events a noise filter keeps are shown.
 // A progress bar runs on stderr.
 
 #include <opencv2/event.hpp>
@@ -31,7 +32,7 @@ struct Options
 {
     std::string input, output, video, mode, filter, filterSettings;
     double windowMs = 0, tauMs = 0, startMs = -1;
-    int maxFrames = -1;
+    int maxFrames = -1, zoom = 0;
     bool show = false, oneBased = false;
     Size sensor;
 };
@@ -66,6 +67,7 @@ const char* const keys =
     "{tau-ms     | 30            | decay of the time surface [ms]}"
     "{start-ms   | -1            | first frame at this time of the recording [ms]; -1: from the start}"
     "{max-frames | -1            | stop after this many frames; -1: all}"
+    "{zoom       | 0             | enlarge the pictures this many times (nearest pixel); 0: to at least 512 px across}"
     "{output     | player_output | folder for frame_NNNNN.png (not written when --video or --show is given)}"
     "{video      |               | write an MJPG video instead of PNG files}"
     "{show       | false         | show the frames in a window}"
@@ -86,6 +88,9 @@ bool parse(int argc, char** argv, Options& o)
     o.tauMs = cmd.get<double>("tau-ms");
     o.startMs = cmd.get<double>("start-ms");
     o.maxFrames = cmd.get<int>("max-frames");
+    o.zoom = cmd.get<int>("zoom");
+    if (o.zoom < 0)
+        throw std::runtime_error("--zoom=" + std::to_string(o.zoom) + ": give 1 or more, or 0 for automatic");
     o.output = cmd.get<std::string>("output");
     o.video = cmd.get<std::string>("video");
     o.show = cmd.has("show");
@@ -122,6 +127,7 @@ int main(int argc, char** argv)
         if (o.startMs >= 0)
             cap.set(EVENT_CAP_PROP_POS_US, cap.get(EVENT_CAP_PROP_FIRST_TIMESTAMP_US) + o.startMs * 1000);
         const bool stereo = cap.get(EVENT_CAP_PROP_STEREO) != 0;
+        const int zoom = o.zoom > 0 ? o.zoom : std::max(1, 512 / std::max(size.width, size.height));
         const bool writePngs = o.video.empty() && !o.show;
         if (writePngs && !utils::fs::createDirectories(o.output))
             throw std::runtime_error(o.output + ": cannot create the output folder");
@@ -144,6 +150,8 @@ int main(int argc, char** argv)
             Mat frame = render(*surface[0], now, o);
             if (stereo)
                 hconcat(frame, render(*surface[1], now, o), frame);
+            if (zoom > 1)
+                resize(frame, frame, Size(), zoom, zoom, INTER_NEAREST);
             if (!o.video.empty())
             {
                 if (!video.isOpened() &&
