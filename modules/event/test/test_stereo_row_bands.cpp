@@ -106,7 +106,8 @@ TEST(StereoEventMatcher, row_bands_follow_the_rectified_rows)
 
 TEST(StereoEventMatcher, row_bands_on_a_short_sensor_and_a_bad_event_behave_like_one_thread)
 {
-    // 32 rows hold a single band at the defaults (each is at least 17 rows): the band path on one thread.
+    // 32 rows hold a single band at the defaults (each is more than the 19 rows across which two operations
+    // can conflict): the band path on one thread.
     const Size small(64, 32);
     std::vector<Event> ev;
     RNG rng(7);

@@ -31,7 +31,7 @@ std::vector<int> RowBandScheduler::splitRows(const std::vector<int>& rows, int v
     return first;
 }
 
-std::exception_ptr RowBandScheduler::run(const std::vector<int>& firstRows, int height, int eventReach, int expiryReach,
+std::exception_ptr RowBandScheduler::run(const std::vector<int>& firstRows, int height, int conflictRows,
                                          const std::vector<int>& rows, const std::vector<int64>& times, int valid,
                                          const Operations& ops)
 {
@@ -47,7 +47,7 @@ std::exception_ptr RowBandScheduler::run(const std::vector<int>& firstRows, int 
     auto runOne = [&](int b) {
         try
         {
-            runBand(b, firstRows, height, eventReach, expiryReach, rows, times, valid, ops);
+            runBand(b, firstRows, height, conflictRows, rows, times, valid, ops);
         }
         catch (...)
         {
@@ -68,7 +68,7 @@ std::exception_ptr RowBandScheduler::run(const std::vector<int>& firstRows, int 
     return std::exception_ptr();
 }
 
-void RowBandScheduler::runBand(int b, const std::vector<int>& firstRows, int height, int reach, int expiryReach,
+void RowBandScheduler::runBand(int b, const std::vector<int>& firstRows, int height, int conflictRows,
                                const std::vector<int>& rows, const std::vector<int64>& times, int valid,
                                const Operations& ops)
 {
@@ -76,11 +76,11 @@ void RowBandScheduler::runBand(int b, const std::vector<int>& firstRows, int hei
     const int top = firstRows[(size_t)b], bottom = b + 1 < bands ? firstRows[(size_t)b + 1] : height;
     const int64 stride = bands + 1, none = std::numeric_limits<int64>::max();
     BandProgress& mine = progress_[(size_t)b];
-    // Waits until the neighbours whose operations may touch rows [y - r, y + r] are past `key`.
-    auto waitForNeighbours = [&](int y, int r, int64 key) {
-        if (b > 0 && y - r < top + reach)
+    // Waits until the neighbours that may hold an operation within conflictRows of row y are past `key`.
+    auto waitForNeighbours = [&](int y, int64 key) {
+        if (b > 0 && y < top + conflictRows)
             waitPast(progress_[(size_t)b - 1], key);
-        if (b + 1 < bands && y + r >= bottom - reach)
+        if (b + 1 < bands && y >= bottom - conflictRows)
             waitPast(progress_[(size_t)b + 1], key);
     };
     int i = 0;
@@ -103,11 +103,11 @@ void RowBandScheduler::runBand(int b, const std::vector<int>& firstRows, int hei
         mine.key.store(key, std::memory_order_release);
         if (expiryKey < eventKey)
         {
-            waitForNeighbours(expiryRow, expiryReach, key);
+            waitForNeighbours(expiryRow, key);
             ops.expire(b, token);
             continue;
         }
-        waitForNeighbours(rows[(size_t)i], reach, key);
+        waitForNeighbours(rows[(size_t)i], key);
         ops.process(b, i);
         i++;
     }

@@ -23,11 +23,13 @@ The image rows are split into bands, each processed by its own thread in time or
 expiries of its pixels where the single thread would take them (before the first event at or after the
 expiry time). Every operation has a key, its place in the single thread's order: position x (bands + 1) +
 band for an expiry (position: the index of that first event; expiries at one position commute, a map's state
-depends only on what is active), index x (bands + 1) + bands for an event. An operation whose rows (its row
-+- its reach) may meet rows the neighbouring band's operations touch (that band's rows + the largest reach)
-first waits until the neighbour's next operation has a larger key: every operation it could conflict with
-then ran in the single thread's order. Bands are at least 2 x the largest reach + 1 tall, so only neighbours
-can meet. Two bands never wait on each other at once: the smaller of their keys goes first.
+depends only on what is active), index x (bands + 1) + bands for an event. Two operations conflict only when
+one writes data the other reads or writes: the caller gives the row distance beyond which none do
+(conflictRows: the largest write reach + the largest reach of any access). An operation within conflictRows
+of a neighbouring band's rows first waits until that neighbour's next operation has a larger key: every
+operation it could conflict with then ran in the single thread's order. Bands are more than conflictRows
+tall, so only neighbours can conflict. Two bands never wait on each other at once: the smaller of their keys
+goes first.
 
 The scheduler knows rows, times and keys only; what an operation does comes through Operations. */
 class RowBandScheduler
@@ -51,11 +53,11 @@ public:
     static std::vector<int> splitRows(const std::vector<int>& rows, int valid, int height, int bands, int minHeight);
 
     /** Runs the first @p valid events (@p rows and @p times as for splitRows; times non-decreasing) and the
-    expiries due before the last of them on one thread per band (@p firstRows from splitRows, one band on the
-    calling thread). @p eventReach and @p expiryReach: how many rows above and below its own an event and an
-    expiry read or write; eventReach is the larger. Returns once every band is done, with the first failure
-    of any band (null when none): a failed band stops, the others finish. */
-    std::exception_ptr run(const std::vector<int>& firstRows, int height, int eventReach, int expiryReach,
+    expiries due before the last of them on one thread per band (@p firstRows from splitRows with a minimum
+    height above @p conflictRows, one band on the calling thread). @p conflictRows: two operations (events or
+    expiries) whose rows are further apart never touch data that one of them writes. Returns once every band
+    is done, with the first failure of any band (null when none): a failed band stops, the others finish. */
+    std::exception_ptr run(const std::vector<int>& firstRows, int height, int conflictRows,
                            const std::vector<int>& rows, const std::vector<int64>& times, int valid,
                            const Operations& ops);
 
@@ -68,7 +70,7 @@ private:
         char padding[64 - sizeof(std::atomic<int64>)];
     };
 
-    void runBand(int band, const std::vector<int>& firstRows, int height, int eventReach, int expiryReach,
+    void runBand(int band, const std::vector<int>& firstRows, int height, int conflictRows,
                  const std::vector<int>& rows, const std::vector<int64>& times, int valid, const Operations& ops);
     static void waitPast(const BandProgress& neighbour, int64 key);
 

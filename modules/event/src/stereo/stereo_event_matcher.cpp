@@ -423,9 +423,10 @@ void StereoEventMatcherImpl::processOperations(const Mat_<Event>& ev, const Stor
     }
     else
     {
-        const int reach = eventRowReach();
-        const int bands = std::max(1, std::min(numThreads_, size_.height / (2 * reach + 1)));
-        const std::vector<int> first = RowBandScheduler::splitRows(operationRows_, count, size_.height, bands, 2 * reach + 1);
+        const int conflictRows = bandConflictRows();
+        const int bands = std::max(1, std::min(numThreads_, size_.height / (conflictRows + 1)));
+        const std::vector<int> first = RowBandScheduler::splitRows(operationRows_, count, size_.height, bands,
+                                                                   conflictRows + 1);
         maps_[0].setRowBands(first);
         maps_[1].setRowBands(first);
         if (bandScratch_.size() < (size_t)bands)
@@ -455,7 +456,7 @@ void StereoEventMatcherImpl::processOperations(const Mat_<Event>& ev, const Stor
         };
         ops.expire = [this](int b, int map) { maps_[map].expireEarliest(b); };
         ops.process = [&](int b, int k) { run(k, bandScratch_[(size_t)b]); };
-        failure = bands_.run(first, size_.height, reach, expiryRowReach(), operationRows_, operationTimes_, count, ops);
+        failure = bands_.run(first, size_.height, conflictRows, operationRows_, operationTimes_, count, ops);
         for (int b = 0; b < bands; b++)
             for (int c = 0; c < 2; c++)
                 addStatusCounts(*estimators_[c], bandScratch_[(size_t)b].lifetimes[c]);
@@ -810,10 +811,7 @@ void StereoEventMatcherImpl::setDisparityRange(int lo, int hi)
     reset();
 }
 
-// How many rows above and below its own an event's processing reads or writes: the aggregation window's
-// descriptors (match), the matched window (its median lifetime), the left-right check's 3 x 3, the vectors
-// an activation or deactivation changes (2 x the max length for the re-search) and their votes, the plane
-// fit's window. Operations further apart in rows than the sum of their reaches touch disjoint state.
+// See the declaration: every row an event's processing reads or writes lies within this reach.
 int StereoEventMatcherImpl::eventRowReach() const
 {
     return std::max({ aggregationWindow_ / 2, costWindow_ / 2, lifetimeWindow_ / 2, 1, (int)PRIOR_RADIUS,

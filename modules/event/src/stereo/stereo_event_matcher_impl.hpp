@@ -191,12 +191,21 @@ private:
     // How many rows above and below its own an event's processing reads or writes: the aggregation window's
     // descriptors (match), the matched window (its median lifetime), the left-right check's 3 x 3, the
     // temporal prior's neighbourhood, the vectors an activation or deactivation changes (2 x the max length
-    // for the re-search) and their votes, the plane fit's window. Operations further apart in rows than the
-    // sum of their reaches touch disjoint state.
+    // for the re-search) and their votes, the plane fit's window.
     int eventRowReach() const;
 
     // The same for an expiry (a deactivation).
     int expiryRowReach() const { return std::max(2 * maxVectorLength_, maxVectorLength_ + descriptorWindow_ / 2); }
+
+    // How many rows above and below its own an event or an expiry writes: the votes of the vectors an
+    // activation or deactivation changes (pixels within the max length, each voting into its descriptor
+    // window) and the lifetime estimator's prediction for the neighbour the edge moves to (1 row). Everything
+    // further out (the cost windows, the prior, the medians, the re-search) is only read.
+    int rowWriteReach() const { return std::max(maxVectorLength_ + descriptorWindow_ / 2, 1); }
+
+    // Row bands: two operations further apart in rows than this never touch data that one of them writes
+    // (the largest write reach + the largest reach of any access; eventRowReach() includes the expiries').
+    int bandConflictRows() const { return rowWriteReach() + eventRowReach(); }
 
     Mat colourLut() const;
     int colourIndex(float d) const;
