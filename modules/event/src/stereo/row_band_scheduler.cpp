@@ -43,6 +43,10 @@ std::exception_ptr RowBandScheduler::run(const std::vector<int>& firstRows, int 
     }
     for (int b = 0; b < bands; b++)
         progress_[(size_t)b].key.store(-1, std::memory_order_relaxed);
+    // With a core for every band a waiting band spins: the neighbour it waits for is running, and a yield
+    // (a system call) costs more than the wait. With more bands than cores it yields soon, so that the band it
+    // waits for gets the core.
+    spinLimit_ = bands <= getNumberOfCPUs() ? 1 << 17 : 64;
     std::vector<std::exception_ptr> failures((size_t)bands);
     auto runOne = [&](int b) {
         try
@@ -113,10 +117,10 @@ void RowBandScheduler::runBand(int b, const std::vector<int>& firstRows, int hei
     }
 }
 
-void RowBandScheduler::waitPast(const BandProgress& neighbour, int64 key)
+void RowBandScheduler::waitPast(const BandProgress& neighbour, int64 key) const
 {
     for (int spins = 0; neighbour.key.load(std::memory_order_acquire) <= key; spins++)
-        if (spins >= 64)
+        if (spins >= spinLimit_)
             std::this_thread::yield();
 }
 

@@ -72,10 +72,11 @@ private:
 
     void runBand(int band, const std::vector<int>& firstRows, int height, int conflictRows,
                  const std::vector<int>& rows, const std::vector<int64>& times, int valid, const Operations& ops);
-    static void waitPast(const BandProgress& neighbour, int64 key);
+    void waitPast(const BandProgress& neighbour, int64 key) const;
 
     std::unique_ptr<BandProgress[]> progress_;
     int bands_ = 0;
+    int spinLimit_ = 64;  // checks of the neighbour's progress before each yield
 };
 
 }  // namespace detail
