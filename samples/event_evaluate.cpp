@@ -624,38 +624,35 @@ int main(int argc, char** argv)
         const double atFull = precisionAtDensity(acc.ranked, acc.candidates, fullDensity);
         auto percent = [](double v) { return v < 0 ? std::string("n/a") : cv::format("%.1f %%", v); };
         // Every key for every method, "n/a" where the method estimates no disparities (as for lifetimes).
-        std::ostringstream disparityMetrics;
-        disparityMetrics << "events_with_disparity," << acc.estimated << "\n"
-                         << "disparity_density_percent," << density << "\n"
-                         << "within_1px_percent," << within1 << "\n"
-                         << "matching_rate_percent," << matchingRate << "\n"
-                         << "left_occluded_percent," << share(acc.leftSignal - acc.leftVisible, acc.leftSignal) << "\n"
-                         << "matching_rate_visible_percent," << share(acc.leftVisibleMatched, acc.leftVisible) << "\n"
-                         << "matching_rate_motion_percent," << share(acc.leftMotionMatched, acc.leftMotion) << "\n"
-                         << "left_wrong_percent," << share(acc.leftWrong, acc.leftSignal) << "\n"
-                         << "left_ambiguous_percent," << share(acc.leftAmbiguous, acc.leftSignal) << "\n"
-                         << "left_no_counterpart_percent," << share(acc.leftNoCounterpart, acc.leftSignal) << "\n"
-                         << "precision_at_50_percent_density," << at50 << "\n"
-                         << "precision_at_75_percent_density," << at75 << "\n"
-                         << "unfiltered_density_percent," << fullDensity << "\n"
-                         << "precision_at_unfiltered_density," << atFull << "\n"
-                         << "mean_abs_disparity_error_px," << mae << "\n"
-                         << "relative_depth_error_percent," << relDepth << "\n";
-        std::string disparityLines = disparityMetrics.str();
-        if (!estimate.hasDisparity)
-        {
-            std::istringstream lines(disparityLines);
-            std::string line, keys;
-            while (std::getline(lines, line))
-                keys += line.substr(0, line.find(',')) + ",n/a\n";
-            disparityLines = keys;
-        }
+        auto disparityValue = [&](auto value) {
+            std::ostringstream text;
+            if (estimate.hasDisparity)
+                text << value;
+            else
+                text << "n/a";
+            return text.str();
+        };
         std::ofstream csv(o.output + "/metrics.csv");
         csv << "metric,value\n"
             << "events," << acc.events << "\n"
             << "signal_events," << acc.signal << "\n"
             << "non_occluded_signal_events," << acc.candidates << "\n"
-            << disparityLines
+            << "events_with_disparity," << disparityValue(acc.estimated) << "\n"
+            << "disparity_density_percent," << disparityValue(density) << "\n"
+            << "within_1px_percent," << disparityValue(within1) << "\n"
+            << "matching_rate_percent," << disparityValue(matchingRate) << "\n"
+            << "left_occluded_percent," << disparityValue(share(acc.leftSignal - acc.leftVisible, acc.leftSignal)) << "\n"
+            << "matching_rate_visible_percent," << disparityValue(share(acc.leftVisibleMatched, acc.leftVisible)) << "\n"
+            << "matching_rate_motion_percent," << disparityValue(share(acc.leftMotionMatched, acc.leftMotion)) << "\n"
+            << "left_wrong_percent," << disparityValue(share(acc.leftWrong, acc.leftSignal)) << "\n"
+            << "left_ambiguous_percent," << disparityValue(share(acc.leftAmbiguous, acc.leftSignal)) << "\n"
+            << "left_no_counterpart_percent," << disparityValue(share(acc.leftNoCounterpart, acc.leftSignal)) << "\n"
+            << "precision_at_50_percent_density," << disparityValue(at50) << "\n"
+            << "precision_at_75_percent_density," << disparityValue(at75) << "\n"
+            << "unfiltered_density_percent," << disparityValue(fullDensity) << "\n"
+            << "precision_at_unfiltered_density," << disparityValue(atFull) << "\n"
+            << "mean_abs_disparity_error_px," << disparityValue(mae) << "\n"
+            << "relative_depth_error_percent," << disparityValue(relDepth) << "\n"
             << "lifetime_median_relative_error_percent," << lifetimeError << "\n"
             << "noise_precision_percent," << precision << "\n"
             << "noise_recall_percent," << recall << "\n"

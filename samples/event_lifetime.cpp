@@ -18,6 +18,7 @@
 
 #include "sample_algorithm_settings.hpp"
 #include "sample_command_line.hpp"
+#include "sample_pictures.hpp"
 #include "sample_progress.hpp"
 
 #include <cstdio>
@@ -96,7 +97,7 @@ int main(int argc, char** argv)
         std::vector<Event> packet;
         int64 pictures = 0, processed = 0;
         SampleProgress progress;
-        const int zoom = std::max(1, 480 / std::max(size.width, size.height));
+        const int zoom = samplePictureZoom(size);
         const int64 t0 = getTickCount();
         std::vector<Event> checked;
         std::vector<float> checkedLifetimes;
@@ -132,7 +133,7 @@ int main(int argc, char** argv)
             for (const Event& e : recent)
                 fixed.at<uchar>(e.y, e.x) = e.p ? 255 : 128;
             hconcat(active, fixed, pair);
-            resize(pair, pair, Size(), zoom, zoom, INTER_NEAREST);
+            pair = sampleEnlarge(pair, zoom);
             cvtColor(pair, pair, COLOR_GRAY2BGR);
             line(pair, Point(size.width * zoom, 0), Point(size.width * zoom, size.height * zoom), Scalar(0, 160, 255), 1);
             putText(pair, "active events (lifetime)", Point(6, 16), FONT_HERSHEY_SIMPLEX, 0.45, Scalar(0, 160, 255), 1);

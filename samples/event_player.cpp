@@ -18,6 +18,7 @@
 
 #include "sample_algorithm_settings.hpp"
 #include "sample_command_line.hpp"
+#include "sample_pictures.hpp"
 #include "sample_progress.hpp"
 
 #include <cstdio>
@@ -127,7 +128,7 @@ int main(int argc, char** argv)
         if (o.startMs >= 0)
             cap.set(EVENT_CAP_PROP_POS_US, cap.get(EVENT_CAP_PROP_FIRST_TIMESTAMP_US) + o.startMs * 1000);
         const bool stereo = cap.get(EVENT_CAP_PROP_STEREO) != 0;
-        const int zoom = o.zoom > 0 ? o.zoom : std::max(1, 512 / std::max(size.width, size.height));
+        const int zoom = o.zoom > 0 ? o.zoom : samplePictureZoom(size);
         const bool writePngs = o.video.empty() && !o.show;
         if (writePngs && !utils::fs::createDirectories(o.output))
             throw std::runtime_error(o.output + ": cannot create the output folder");
@@ -151,7 +152,7 @@ int main(int argc, char** argv)
             if (stereo)
                 hconcat(frame, render(*surface[1], now, o), frame);
             if (zoom > 1)
-                resize(frame, frame, Size(), zoom, zoom, INTER_NEAREST);
+                frame = sampleEnlarge(frame, zoom);
             if (!o.video.empty())
             {
                 if (!video.isOpened() &&

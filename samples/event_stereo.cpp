@@ -26,7 +26,9 @@
 
 #include "sample_command_line.hpp"
 #include "sample_algorithm_settings.hpp"
+#include "sample_pictures.hpp"
 #include "sample_progress.hpp"
+#include "sample_stereo_pair.hpp"
 
 #include <algorithm>
 #include <cstdio>
@@ -377,7 +379,7 @@ private:
         double score = 0;
         const int d = estimateDominantDisparity(events_, size_, reach, noArray(), &score);
         disparityResult_ = cv::format("%d px (correlation %.2f, %zu events)", d, score, events_.size());
-        if (score < kMinScore)
+        if (score < kSampleMinLineUpScore)
             return;  // the events do not say enough to warn on
         std::string advice;
         if (d < 0 && d < minDisparity_ - 1)
@@ -420,10 +422,6 @@ private:
                 }
         }
     }
-
-    // Below this correlation at the peak the events do not say where the scene lies (measured: 0.18-0.85 on
-    // the simulated scenes, 2 s each).
-    static constexpr double kMinScore = 0.1;
 
     Size size_;
     int minDisparity_, maxDisparity_;
@@ -471,7 +469,7 @@ int main(int argc, char** argv)
             csv.open(opt.output + "/events.csv");
             csv << "t,x,y,p,camera,disparity,depth,lifetime,flags,confidence\n";
         }
-        const int zoom = std::max(1, 480 / std::max(size.width, size.height));
+        const int zoom = samplePictureZoom(size);
         VideoWriter video;
         std::vector<int64> histogram((size_t)(opt.maxDisparity - opt.minDisparity + 1), 0);
         std::vector<int64> confidences(101, 0);  // the left estimates', bins of 0.01
@@ -486,9 +484,7 @@ int main(int argc, char** argv)
         Mat truth, disparity, lifetime, flags, depth, confidence, truthDisparity;
         double windowEnd = 0;
         char line[160];
-        const std::string swapAdvice = !opt.left.empty() ? "exchange --left and --right"
-            : source.isText() ? cv::format("give --left-camera-value=%d", 1 - opt.leftCameraValue)
-                              : "exchange the left and right cameras";
+        const std::string swapAdvice = sampleCameraSwapAdvice(!opt.left.empty(), source.isText(), opt.leftCameraValue);
         PairCheck pairCheck(size, opt.minDisparity, opt.maxDisparity, swapAdvice, opt.calib);
         while (source.next(packet, truth, windowEnd))
         {
@@ -569,7 +565,7 @@ int main(int argc, char** argv)
                         FONT_HERSHEY_PLAIN, 0.8, Scalar::all(255), 1);
                 vconcat(row, below, row);
             }
-            resize(row, row, Size(), zoom, zoom, INTER_NEAREST);
+            row = sampleEnlarge(row, zoom);
             if (opt.allFrames || isPictureWindow(windows, source.progress(), lastEighth))
             {
                 std::snprintf(line, sizeof(line), "/disparity_%05lld.png", (long long)windows);

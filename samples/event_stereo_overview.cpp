@@ -15,7 +15,9 @@
 #include <opencv2/imgproc.hpp>
 
 #include "sample_command_line.hpp"
+#include "sample_pictures.hpp"
 #include "sample_progress.hpp"
+#include "sample_stereo_pair.hpp"
 
 #include <cstdio>
 #include <fstream>
@@ -26,9 +28,6 @@ using namespace cv;
 using namespace cv::event;
 
 namespace {
-
-// Below this correlation a window's events do not say where they line up (estimateDominantDisparity()).
-const double kMinLineUpScore = 0.1;
 
 struct Options
 {
@@ -84,13 +83,6 @@ Mat renderSurface(const EventSurface& s, int64 t, double tau)
     return bgr;
 }
 
-Mat upscale(const Mat& m, int factor)
-{
-    Mat big;
-    resize(m, big, Size(), factor, factor, INTER_NEAREST);
-    return big;
-}
-
 }  // namespace
 
 int main(int argc, char** argv)
@@ -132,7 +124,7 @@ int main(int argc, char** argv)
         int64 windows = 0, picturesWritten = 0;
         SampleProgress progress;
         const int pictureEvery = std::max(1, (int)std::lround(500 / opt.windowMs));  // about 2 per second
-        const int zoom = std::max(1, 512 / std::max(size.width, size.height));
+        const int zoom = samplePictureZoom(size);
         const double first = cap.get(EVENT_CAP_PROP_FIRST_TIMESTAMP_US);
         std::vector<Event> packet, side[2];
         const int64 t0 = getTickCount();
@@ -153,7 +145,7 @@ int main(int argc, char** argv)
                 // Both ways: a pair given the wrong way round lines up at a negative disparity.
                 double score = 0;
                 const int d = estimateDominantDisparity(packet, size, reach, noArray(), &score);
-                if (score >= kMinLineUpScore)
+                if (score >= kSampleMinLineUpScore)
                     disparityVotes[d]++;
             }
             const int64 now = (int64)cap.get(EVENT_CAP_PROP_POS_US);
@@ -163,7 +155,7 @@ int main(int argc, char** argv)
                 hconcat(renderSurface(*surface[0], now, opt.windowMs * 1000), renderSurface(*surface[1], now, opt.windowMs * 1000), row);
                 char name[64];
                 std::snprintf(name, sizeof(name), "/surfaces_%05lld.png", (long long)picturesWritten++);
-                imwrite(opt.output + name, upscale(row, zoom));
+                imwrite(opt.output + name, sampleEnlarge(row, zoom));
             }
             windows++;
             progress.update(cap.get(EVENT_CAP_PROP_PROGRESS), format("%s: %.2f s, %.0f events", cap.getSource().c_str(),
@@ -198,9 +190,8 @@ int main(int argc, char** argv)
             lineUp += nextVotes ? cv::format("; next %d px, %d)", next, nextVotes) : std::string(")");
         if (totalVotes && dominant < 0)
         {
-            const std::string advice = !opt.left.empty() ? "exchange --left and --right"
-                : cap.getBackendName() == "TEXT" ? cv::format("give --left-camera-value=%d", 1 - opt.leftCameraValue)
-                                                 : "exchange the left and right cameras";
+            const std::string advice = sampleCameraSwapAdvice(!opt.left.empty(), cap.getBackendName() == "TEXT",
+                                                              opt.leftCameraValue);
             lineUp += "; the right camera sees the scene to the right of the left one: the cameras look exchanged; "
                       + advice;
             std::cerr << "event_stereo_overview: warning: the events line up at " << dominant
