@@ -16,6 +16,7 @@
 
 #include "sample_command_line.hpp"
 
+#include <algorithm>
 #include <cstdio>
 #include <iostream>
 #include <sstream>
@@ -31,6 +32,8 @@ struct Info
     Size size;
     bool stereo = false;
     int64 events = 0, on = 0, left = 0, first = -1, last = -1;
+    int xMin = -1, xMax = -1, yMin = -1, yMax = -1;  // the pixels the events lie on (-1: no events)
+    bool statisticsNeedSensor = false;  // --stats asked for, but neither the format nor --sensor gives the size
     double rejected = 0, backwards = 0, skipped = 0;
     std::vector<EventStreamStatistics> cameras;  // --stats: per camera (left, right), or one for mono
 };
@@ -43,7 +46,7 @@ public:
 
     void add(const std::vector<Event>& packet, Size size)
     {
-        if (!enabled_ || packet.empty())
+        if (!enabled_ || packet.empty() || size.empty())
             return;
         if (stats_.empty())
             for (int c = 0; c < 2; c++)
@@ -73,10 +76,19 @@ private:
 // Adds a packet (not empty) to the counts and, with --stats, to the statistics.
 void countPacket(Info& info, const std::vector<Event>& packet, CameraStatistics& statistics)
 {
+    if (info.xMin < 0)
+    {
+        info.xMin = info.xMax = packet.front().x;
+        info.yMin = info.yMax = packet.front().y;
+    }
     for (const Event& e : packet)
     {
         info.on += e.p;
         info.left += e.camera == CAMERA_LEFT;
+        info.xMin = std::min(info.xMin, (int)e.x);
+        info.xMax = std::max(info.xMax, (int)e.x);
+        info.yMin = std::min(info.yMin, (int)e.y);
+        info.yMax = std::max(info.yMax, (int)e.y);
     }
     info.events += (int64)packet.size();
     if (info.first < 0)
@@ -102,6 +114,7 @@ Info probe(const std::string& path, Size sensor, bool oneBased, int leftValue, b
         info.format = cap.getBackendName();
         info.size = cap.getSensorSize();
         info.stereo = cap.get(EVENT_CAP_PROP_STEREO) != 0;
+        info.statisticsNeedSensor = withStatistics && info.size.empty();
         std::vector<Event> packet;
         while (cap.read(packet))
         {
@@ -181,7 +194,8 @@ void printJson(const Info& i, bool last)
                   << ", \"first_us\": " << i.first << ", \"last_us\": " << i.last
                   << ", \"duration_us\": " << (i.events ? i.last - i.first : 0)
                   << ", \"rejected_outside\": " << (int64)i.rejected << ", \"time_backwards\": " << (int64)i.backwards
-                  << ", \"skipped\": " << (int64)i.skipped;
+                  << ", \"skipped\": " << (int64)i.skipped << ", \"x_min\": " << i.xMin << ", \"x_max\": " << i.xMax
+                  << ", \"y_min\": " << i.yMin << ", \"y_max\": " << i.yMax;
     if (!i.cameras.empty())
     {
         std::cout << ", \"statistics\": [";
@@ -208,15 +222,24 @@ void printText(const Info& i)
         std::cout << "  error:     " << i.error << "\n";
         return;
     }
-    std::cout << "  format:    " << i.format << (i.stereo ? " (stereo)" : "") << "\n"
-              << "  sensor:    " << i.size.width << " x " << i.size.height << "\n"
-              << "  events:    " << i.events << " (ON " << i.on << ", OFF " << i.events - i.on << ")\n";
+    std::cout << "  format:    " << i.format << (i.stereo ? " (stereo)" : "") << "\n";
+    if (i.size.empty())
+        std::cout << "  sensor:    not recorded in this file (give the tools --sensor=WxH)\n";
+    else
+        std::cout << "  sensor:    " << i.size.width << " x " << i.size.height << "\n";
+    std::cout << "  events:    " << i.events << " (ON " << i.on << ", OFF " << i.events - i.on << ")\n";
+    if (i.events)
+        std::cout << "  pixels:    x " << i.xMin << ".." << i.xMax << ", y " << i.yMin << ".." << i.yMax << "\n";
     if (i.stereo)
         std::cout << "  cameras:   left " << i.left << ", right " << i.events - i.left << "\n";
     std::cout << "  time:      " << i.first << " .. " << i.last << " us, duration "
               << (i.events ? (i.last - i.first) / 1e6 : 0.0) << " s\n"
               << "  rejected:  " << (int64)i.rejected << " outside the sensor, " << (int64)i.backwards
               << " going back in time, " << (int64)i.skipped << " without time base\n";
+    if (i.statisticsNeedSensor)
+        std::cout << "  --stats:   needs the sensor size, which this file does not record: give --sensor=WxH"
+                  << (i.events ? cv::format(" (at least %d x %d for these events)", i.xMax + 1, i.yMax + 1) : std::string())
+                  << "\n";
     for (size_t c = 0; c < i.cameras.size(); c++)
     {
         const EventStreamStatistics& st = i.cameras[c];
@@ -347,7 +370,7 @@ int main(int argc, char** argv)
     }
     if (json)
         std::cout << "]\n";
-    else if (withStatistics)
+    else if (withStatistics && std::any_of(infos.begin(), infos.end(), [](const Info& i) { return !i.cameras.empty(); }))
         printStatisticsTable(infos);
     return failed ? 1 : 0;
 }

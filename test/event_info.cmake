@@ -11,7 +11,7 @@ endif()
 # 4 lines, one outside the 8 x 6 sensor (9, 9); ON 2 of the 3 delivered; cameras: left 1, right 2.
 foreach(expected [["format": "TEXT"]] [["width": 8]] [["height": 6]] [["stereo": true]] [["events": 3]]
                  [["on": 2]] [["left": 1]] [["right": 2]] [["first_us": 1000]] [["last_us": 5000]]
-                 [["rejected_outside": 1]])
+                 [["rejected_outside": 1]] [["x_min": 1, "x_max": 7, "y_min": 2, "y_max": 5]])
   string(FIND "${out}" "${expected}" at)
   if(at EQUAL -1)
     message(FATAL_ERROR "event_info --json output lacks ${expected}")
@@ -27,6 +27,15 @@ foreach(expected [["camera": 0, "event_rate": 0, "on_share": 1,]] [["camera": 1,
     message(FATAL_ERROR "event_info --json --stats output lacks ${expected}: ${out}")
   endif()
 endforeach()
+# A file without the sensor size: the text says so, and --stats, which needs it, names the smallest sensor
+# that holds the events ((3, 4) and (7, 5): 8 x 6) instead of failing on the file.
+set(no_size "${WORK_DIR}/no_size.txt")
+file(WRITE "${no_size}" "0.001 3 4 0 1\n0.002 7 5 1 1\n")
+execute_process(COMMAND "${EVENT_INFO}" --stats "${no_size}" RESULT_VARIABLE rc OUTPUT_VARIABLE out)
+if(NOT rc EQUAL 0 OR NOT out MATCHES "sensor: +not recorded in this file"
+   OR NOT out MATCHES "pixels: +x 3..7, y 4..5" OR NOT out MATCHES "give --sensor=WxH \\(at least 8 x 6 for these events\\)")
+  message(FATAL_ERROR "event_info --stats on a file without a sensor size: exit status ${rc} and: ${out}")
+endif()
 execute_process(COMMAND "${EVENT_INFO}" "${WORK_DIR}/missing.aedat4" RESULT_VARIABLE rc OUTPUT_VARIABLE out)
 if(NOT rc EQUAL 1 OR NOT out MATCHES "missing.aedat4: cannot open")
   message(FATAL_ERROR "a missing file gave exit status ${rc} and: ${out}")
