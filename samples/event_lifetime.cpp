@@ -79,7 +79,7 @@ int main(int argc, char** argv)
         cap.open(input);
         const Size size = cap.getSensorSize();
         if (size.empty())
-            throw std::runtime_error(input + ": the format does not give the sensor size; pass --sensor=WxH");
+            throw sensorSizeMissing(input);
         Ptr<LifetimeEstimator> est = LifetimeEstimator::create(size);
         Ptr<LifetimeArrivalCheck> check = LifetimeArrivalCheck::create(size);  // the lifetimes against the recording
         est->setUsePrediction(prediction);

@@ -124,7 +124,7 @@ int main(int argc, char** argv)
         cap.open(o.input);
         const Size size = cap.getSensorSize();
         if (size.empty())
-            throw std::runtime_error(o.input + ": the format does not give the sensor size; pass --sensor=WxH");
+            throw sensorSizeMissing(o.input);
         if (o.startMs >= 0)
             cap.set(EVENT_CAP_PROP_POS_US, cap.get(EVENT_CAP_PROP_FIRST_TIMESTAMP_US) + o.startMs * 1000);
         const bool stereo = cap.get(EVENT_CAP_PROP_STEREO) != 0;

@@ -447,7 +447,7 @@ int main(int argc, char** argv)
         Source source(opt);
         const Size size = source.sensorSize();
         if (size.empty())
-            throw std::runtime_error(source.name() + ": the format does not give the sensor size; pass --sensor=WxH");
+            throw sensorSizeMissing(source.name());
 
         Ptr<StereoEventMatcher> matcher = StereoEventMatcher::create(size, findStereoMode(opt.mode));
         matcher->setMinDisparity(opt.minDisparity);

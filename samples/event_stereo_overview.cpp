@@ -115,7 +115,7 @@ int main(int argc, char** argv)
             throw std::runtime_error(cap.getSource() + ": not a stereo recording (no camera column)");
         Size size = cap.getSensorSize();
         if (size.empty())
-            throw std::runtime_error(cap.getSource() + ": the format does not give the sensor size; pass --sensor WxH");
+            throw sensorSizeMissing(cap.getSource());
 
         const int reach = std::max(1, std::min(opt.maxDisparity, size.width / 2));
         Ptr<EventSurface> surface[2] = { EventSurface::create(size), EventSurface::create(size) };

@@ -22,6 +22,14 @@
 #include <string>
 #include <vector>
 
+/** The error for a recording whose format does not record the sensor size (text without a size line, DAT
+    without a geometry line): what to give, and where to find it. */
+inline std::runtime_error sensorSizeMissing(const std::string& source)
+{
+    return std::runtime_error(source + ": the file does not record the sensor size; pass --sensor=WxH (event_info "
+                              "lists the pixels its events lie on)");
+}
+
 /** "a=1,b=2" -> {(a, 1), (b, 2)}: the value of list options such as --set. Empty items are skipped; an item
     that is not NAME=VALUE throws std::runtime_error naming @p option. */
 inline std::vector<std::pair<std::string, std::string>> parseNameValueList(const std::string& option,

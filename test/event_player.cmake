@@ -1,6 +1,6 @@
 # ctest `event_player_frames`: event_player on a small stereo fixture writes left | right frames enlarged to at
 # least 512 px across by default (8 x 6 pixels: 64 times, 1024 x 384 for the pair), or by --zoom; a negative
-# zoom is refused.
+# zoom is refused; a file without a sensor size is refused with the option to give.
 foreach(v EVENT_PLAYER WORK_DIR)
   if(NOT DEFINED ${v})
     message(FATAL_ERROR "event_player.cmake: ${v} not set")
@@ -50,4 +50,17 @@ execute_process(COMMAND "${EVENT_PLAYER}" "${fixture}" --zoom=-1 "--output=${WOR
                 RESULT_VARIABLE rc ERROR_VARIABLE err)
 if(rc EQUAL 0 OR NOT err MATCHES "--zoom=-1")
   message(FATAL_ERROR "a negative zoom was not refused (${rc}): ${err}")
+endif()
+
+# A recording without its sensor size is refused with the option to give; given it, it plays.
+set(no_size "${WORK_DIR}/no_size.txt")
+file(WRITE "${no_size}" "0.001 1 2 1 0\n0.002 3 4 0 1\n")
+execute_process(COMMAND "${EVENT_PLAYER}" "${no_size}" "--output=${WORK_DIR}/no_size" RESULT_VARIABLE rc ERROR_VARIABLE err)
+if(rc EQUAL 0 OR NOT err MATCHES "no_size.txt: the file does not record the sensor size; pass --sensor=WxH")
+  message(FATAL_ERROR "a file without a sensor size gave exit status ${rc} and: ${err}")
+endif()
+execute_process(COMMAND "${EVENT_PLAYER}" "${no_size}" --sensor=4x5 --zoom=1 "--output=${WORK_DIR}/given_size" RESULT_VARIABLE rc ERROR_VARIABLE err)
+png_size("${WORK_DIR}/given_size/frame_00000.png" size)
+if(NOT rc EQUAL 0 OR NOT size STREQUAL "8x5")
+  message(FATAL_ERROR "with --sensor=4x5: exit status ${rc}, frame ${size} (expected 8x5, left | right): ${err}")
 endif()
