@@ -34,6 +34,7 @@ struct Info
     int64 events = 0, on = 0, left = 0, first = -1, last = -1;
     int xMin = -1, xMax = -1, yMin = -1, yMax = -1;  // the pixels the events lie on (-1: no events)
     bool statisticsNeedSensor = false;  // --stats asked for, but neither the format nor --sensor gives the size
+    bool oneBased = false;              // --one-based (for the advice on events outside the sensor)
     double rejected = 0, backwards = 0, skipped = 0;
     std::vector<EventStreamStatistics> cameras;  // --stats: per camera (left, right), or one for mono
 };
@@ -115,6 +116,7 @@ Info probe(const std::string& path, Size sensor, bool oneBased, int leftValue, b
         info.size = cap.getSensorSize();
         info.stereo = cap.get(EVENT_CAP_PROP_STEREO) != 0;
         info.statisticsNeedSensor = withStatistics && info.size.empty();
+        info.oneBased = oneBased;
         std::vector<Event> packet;
         while (cap.read(packet))
         {
@@ -236,6 +238,10 @@ void printText(const Info& i)
               << (i.events ? (i.last - i.first) / 1e6 : 0.0) << " s\n"
               << "  rejected:  " << (int64)i.rejected << " outside the sensor, " << (int64)i.backwards
               << " going back in time, " << (int64)i.skipped << " without time base\n";
+    if (i.rejected > 0)
+        std::cout << "             (outside the sensor: "
+                  << outsideEventsAdvice(i.format == "TEXT", i.oneBased, i.events > 0 && (i.xMin == 0 || i.yMin == 0))
+                  << ")\n";
     if (i.statisticsNeedSensor)
         std::cout << "  --stats:   needs the sensor size, which this file does not record: give --sensor=WxH"
                   << (i.events ? cv::format(" (at least %d x %d for these events)", i.xMax + 1, i.yMax + 1) : std::string())

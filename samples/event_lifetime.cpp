@@ -2,7 +2,7 @@
 // active events next to the fixed-interval accumulation people use today.
 //
 //   event_lifetime [FILE | --scene=NAME] [--camera=0|1] [--frame-ms=10] [--every-ms=50] [--csv=FILE]
-//                  [--output=DIR] [--sensor=WxH|NAME] [--no-prediction] [--max-ms=T] [--set=NAME=VALUE,...]
+//                  [--output=DIR] [--sensor=WxH|NAME] [--one-based] [--no-prediction] [--max-ms=T] [--set=NAME=VALUE,...]
 //
 // Pictures DIR/active_NNNNN.png: left, the events alive at that instant (each lives from its timestamp for
 // its lifetime: the sharp edge image); right, all events of the last --frame-ms (the fixed window).
@@ -41,6 +41,7 @@ const char* const keys =
     "{csv           |                 | write every event with its lifetime and flow to this file}"
     "{output        | lifetime_output | output folder}"
     "{sensor        |                 | sensor size WxH or a name (DVS128, DAVIS240, DAVIS346) when the format has none}"
+    "{one-based     | false           | text recordings count pixels from 1}"
     "{no-prediction | false           | fit a plane for every event (no prediction shortcut)}"
     "{set           |                 | estimator parameters NAME=VALUE, comma separated (FileStorage names, e.g. inlierDistance=0,windowSize=7)}";
 
@@ -76,6 +77,7 @@ int main(int argc, char** argv)
         cap.set(EVENT_CAP_PROP_SENSOR_WIDTH, sensor.width);
         cap.set(EVENT_CAP_PROP_SENSOR_HEIGHT, sensor.height);
         cap.set(EVENT_CAP_PROP_WINDOW_US, everyMs * 1000);
+        cap.set(EVENT_CAP_PROP_TEXT_ONE_BASED, cmd.has("one-based"));
         cap.open(input);
         const Size size = cap.getSensorSize();
         if (size.empty())
@@ -102,8 +104,10 @@ int main(int argc, char** argv)
         std::vector<Event> checked;
         std::vector<float> checkedLifetimes;
         std::vector<Vec2f> checkedFlow;
+        bool touchesZero = false;  // a delivered event in column or row 0 (outsideEventsAdvice())
         while (cap.read(packet))
         {
+            touchesZero = touchesZero || touchesColumnOrRowZero(packet);
             checked.clear();
             checkedLifetimes.clear();
             checkedFlow.clear();
@@ -155,6 +159,11 @@ int main(int argc, char** argv)
         std::cout << processed << " events of camera " << camera << ": " << fitted << " fitted, " << predicted
                   << " predicted (shortcut), " << noise << " noise; " << pictures << " pictures in " << output
                   << "; " << processed / std::max(1e-9, secs) / 1e6 << " Mev/s including I/O and pictures\n";
+        const int64 outside = (int64)cap.get(EVENT_CAP_PROP_REJECTED_OUTSIDE);
+        if (outside > 0)
+            std::cerr << "event_lifetime: warning: " << outside << " input events lie outside the " << size.width
+                      << " x " << size.height << " sensor and were not processed ("
+                      << outsideEventsAdvice(cap.getBackendName() == "TEXT", cmd.has("one-based"), touchesZero) << ")\n";
         // No ground truth needed: lifetimes that agree with the recording give a median near 1.
         std::cout << format("lifetime check: the edge reached the next pixel after %.2f lifetimes (median; quartiles "
                             "%.2f / %.2f) over %.0f events\n", check->getRatioQuantile(0.5),

@@ -2,7 +2,7 @@
 // live stereo DAVIS pair, or the simulator's built-in scene; the main job of this project.
 //
 //   event_stereo [--input=FILE | --left=FILE --right=FILE | --live] [--calib=FILE] [--sensor=WxH]
-//                [--left-camera-value=0|1] [--right-time-offset-ms=MS] [--mode=coupled|decoupled|fixed|sgbm]
+//                [--left-camera-value=0|1] [--one-based] [--right-time-offset-ms=MS] [--mode=coupled|decoupled|fixed|sgbm]
 //                [--min-disparity=PX] [--max-disparity=PX] [--frame-ms=MS] [--threads=N] [--no-csv]
 //                [--all-frames] [--output=DIR] [--set=NAME=VALUE,...] [--scene=NAME --duration-ms=MS]
 //                [--filter=NAME [--filter-set=NAME=VALUE,...]]
@@ -46,7 +46,7 @@ struct Options
 {
     // Defaults: the keys below.
     std::string input, left, right, calib, output, scene, mode, settings, filter, filterSettings;
-    bool live = false, csv = true, allFrames = false;
+    bool live = false, csv = true, allFrames = false, oneBased = false;
     Size sensor;
     int leftCameraValue = 0, minDisparity = 0, maxDisparity = 0;
     // Row bands on their own threads (StereoEventMatcher::setNumThreads): the same results as one thread, but
@@ -65,6 +65,7 @@ const char* const keys =
     "{calib             |            | stereo calibration (FileStorage: K1 D1 K2 D2 R T, image size)}"
     "{sensor            |            | sensor size WxH or a name (DVS128, DAVIS240, DAVIS346) when the format has none}"
     "{left-camera-value | 0          | the camera column's value that means left, in text recordings}"
+    "{one-based         | false      | text recordings count pixels from 1}"
     "{right-time-offset-ms | 0       | added to the right camera's timestamps: two recordings whose clocks differ}"
     "{mode              | coupled    | coupled, decoupled, fixed or sgbm}"
     "{min-disparity     | 0          | smallest disparity searched [px]}"
@@ -95,6 +96,7 @@ bool parse(int argc, char** argv, Options& o)
     if (cmd.has("sensor"))
         o.sensor = parseSensorSize(cmd.get<std::string>("sensor"));
     o.leftCameraValue = cmd.get<int>("left-camera-value");
+    o.oneBased = cmd.has("one-based");
     o.rightTimeOffsetMs = cmd.get<double>("right-time-offset-ms");
     o.mode = cmd.get<std::string>("mode");
     o.minDisparity = cmd.get<int>("min-disparity");
@@ -136,6 +138,7 @@ public:
             return;
         }
         cap_.set(EVENT_CAP_PROP_TEXT_LEFT_CAMERA_VALUE, o.leftCameraValue);
+        cap_.set(EVENT_CAP_PROP_TEXT_ONE_BASED, o.oneBased);
         cap_.set(EVENT_CAP_PROP_RIGHT_TIME_OFFSET_US, o.rightTimeOffsetMs * 1000);
         cap_.set(EVENT_CAP_PROP_SENSOR_WIDTH, o.sensor.width);
         cap_.set(EVENT_CAP_PROP_SENSOR_HEIGHT, o.sensor.height);
@@ -170,6 +173,7 @@ public:
         if (!cap_.read(events))
             return false;
         windowEnd = cap_.get(EVENT_CAP_PROP_POS_US);
+        touchesZero_ = touchesZero_ || touchesColumnOrRowZero(events);
         return true;
     }
 
@@ -177,6 +181,8 @@ public:
     // (delivered with the previous timestamp): both are counted, never silent.
     double rejectedOutside() const { return sim_ ? 0 : cap_.get(EVENT_CAP_PROP_REJECTED_OUTSIDE); }
     double timeBackwards() const { return sim_ ? 0 : cap_.get(EVENT_CAP_PROP_TIME_BACKWARDS); }
+    // Whether a delivered event lay in column or row 0 (a file counted from 1 never has one).
+    bool eventsTouchZero() const { return touchesZero_; }
 
     // 0..1, or -1 when unknown (live).
     double progress() const
@@ -191,6 +197,7 @@ private:
     EventCapture cap_;
     double durationUs_ = 0, windowUs_ = 0;
     std::string name_;
+    bool touchesZero_ = false;
 };
 
 // Pictures written by default: the first window and one each time the run passes another eighth (live, where
@@ -593,7 +600,8 @@ int main(int argc, char** argv)
         const int64 outside = (int64)source.rejectedOutside(), backwards = (int64)source.timeBackwards();
         if (outside > 0)
             std::cerr << "event_stereo: warning: " << outside << " input events lie outside the " << size.width
-                      << " x " << size.height << " sensor and were not processed (--sensor=WxH sets the size)\n";
+                      << " x " << size.height << " sensor and were not processed ("
+                      << outsideEventsAdvice(source.isText(), opt.oneBased, source.eventsTouchZero()) << ")\n";
         auto pct = [](int64 a, int64 b) { return b ? 100.0 * (double)a / (double)b : 0.0; };
         std::ostringstream text;
         text << "# event_stereo summary\n\n| | |\n|---|---|\n"

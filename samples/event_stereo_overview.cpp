@@ -3,7 +3,7 @@
 // most windows' events line up, estimateDominantDisparity(), with a warning when the cameras look exchanged).
 //
 //   event_stereo_overview [--input=FILE | --left=FILE --right=FILE] [--sensor=128x128]
-//                         [--left-camera-value=1] [--window-ms=33] [--max-disparity=40] [--output=DIR]
+//                         [--left-camera-value=1] [--one-based] [--window-ms=33] [--max-disparity=40] [--output=DIR]
 //
 // Without input it simulates the built-in default recording (StereoEventSimulator scene --scene, default
 // "two_planes": a textured plane sliding over a textured background, disparities 20 and 10 px), writes it
@@ -35,6 +35,7 @@ struct Options
     double simulateMs = 0, windowMs = 0;
     Size sensor;
     int leftCameraValue = 0, maxDisparity = 0;
+    bool oneBased = false;
 };
 
 const char* const keys =
@@ -44,6 +45,7 @@ const char* const keys =
     "{right             |            | the right camera's recording (with --left)}"
     "{sensor            |            | sensor size WxH or a name (DVS128, DAVIS240, DAVIS346) when the format has none}"
     "{left-camera-value | 0          | the camera column's value that means left, in text recordings}"
+    "{one-based         | false      | text recordings count pixels from 1}"
     "{window-ms         | 33         | window of one picture [ms]}"
     "{max-disparity     | 40         | largest disparity searched by the correlation, either way [px]}"
     "{output            | output     | output folder}"
@@ -62,6 +64,7 @@ bool parse(int argc, char** argv, Options& o)
     if (cmd.has("sensor"))
         o.sensor = parseSensorSize(cmd.get<std::string>("sensor"));
     o.leftCameraValue = cmd.get<int>("left-camera-value");
+    o.oneBased = cmd.has("one-based");
     o.windowMs = cmd.get<double>("window-ms");
     o.maxDisparity = cmd.get<int>("max-disparity");
     o.output = cmd.get<std::string>("output");
@@ -104,6 +107,7 @@ int main(int argc, char** argv)
 
         EventCapture cap;
         cap.set(EVENT_CAP_PROP_TEXT_LEFT_CAMERA_VALUE, opt.leftCameraValue);
+        cap.set(EVENT_CAP_PROP_TEXT_ONE_BASED, opt.oneBased);
         cap.set(EVENT_CAP_PROP_SENSOR_WIDTH, opt.sensor.width);
         cap.set(EVENT_CAP_PROP_SENSOR_HEIGHT, opt.sensor.height);
         cap.set(EVENT_CAP_PROP_WINDOW_US, opt.windowMs * 1000);
@@ -122,6 +126,7 @@ int main(int argc, char** argv)
         std::map<int, int> disparityVotes;
         int64 counts[2][2] = { { 0, 0 }, { 0, 0 } };
         int64 windows = 0, picturesWritten = 0;
+        bool touchesZero = false;  // a delivered event in column or row 0 (outsideEventsAdvice())
         SampleProgress progress;
         const int pictureEvery = std::max(1, (int)std::lround(500 / opt.windowMs));  // about 2 per second
         const int zoom = samplePictureZoom(size);
@@ -133,6 +138,7 @@ int main(int argc, char** argv)
         {
             side[0].clear();
             side[1].clear();
+            touchesZero = touchesZero || touchesColumnOrRowZero(packet);
             for (const Event& e : packet)
             {
                 side[e.camera].push_back(e);
@@ -197,6 +203,11 @@ int main(int argc, char** argv)
             std::cerr << "event_stereo_overview: warning: the events line up at " << dominant
                       << " px: the cameras look exchanged; " << advice << "\n";
         }
+        const int64 outside = (int64)cap.get(EVENT_CAP_PROP_REJECTED_OUTSIDE);
+        if (outside > 0)
+            std::cerr << "event_stereo_overview: warning: " << outside << " input events lie outside the " << size.width
+                      << " x " << size.height << " sensor and were not read ("
+                      << outsideEventsAdvice(cap.getBackendName() == "TEXT", opt.oneBased, touchesZero) << ")\n";
         std::ofstream summary(opt.output + "/summary.md");
         std::ostringstream text;
         text << "# Stereo recording overview\n\n"
@@ -208,7 +219,7 @@ int main(int argc, char** argv)
              << counts[1][1] << " ON / " << counts[1][0] << " OFF) |\n"
              << "| duration | " << span / 1e6 << " s (" << windows << " windows of " << opt.windowMs << " ms) |\n"
              << "| event rate | " << delivered / std::max(1e-9, span / 1e6) / 1e3 << " kev/s |\n"
-             << "| rejected outside sensor / time steps back | " << cap.get(EVENT_CAP_PROP_REJECTED_OUTSIDE) << " / "
+             << "| rejected outside sensor / time steps back | " << outside << " / "
              << cap.get(EVENT_CAP_PROP_TIME_BACKWARDS) << " |\n"
              << "| dominant disparity (estimateDominantDisparity per window) | " << lineUp << " |\n"
              << "| processing | " << seconds << " s, " << delivered / std::max(1e-9, seconds) / 1e6 << " Mev/s |\n"

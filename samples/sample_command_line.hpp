@@ -30,6 +30,26 @@ inline std::runtime_error sensorSizeMissing(const std::string& source)
                               "lists the pixels its events lie on)");
 }
 
+/** What to do about input events outside the sensor. A text recording that counts pixels from 1 (TUM's DVS128
+    pairs, x and y in 1..128) puts its last column and row one past a sensor counted from 0 and never uses
+    column or row 0: --one-based reads it. */
+inline std::string outsideEventsAdvice(bool textFile, bool oneBased, bool eventsTouchZero)
+{
+    if (textFile && !oneBased && !eventsTouchZero)
+        return "no event lies in column or row 0: if the file counts pixels from 1, give --one-based";
+    return "--sensor=WxH sets the size";
+}
+
+/** True when an event of @p events lies in column 0 or row 0 (see outsideEventsAdvice()). */
+template <typename EventT>
+inline bool touchesColumnOrRowZero(const std::vector<EventT>& events)
+{
+    for (const EventT& e : events)
+        if (e.x == 0 || e.y == 0)
+            return true;
+    return false;
+}
+
 /** "a=1,b=2" -> {(a, 1), (b, 2)}: the value of list options such as --set. Empty items are skipped; an item
     that is not NAME=VALUE throws std::runtime_error naming @p option. */
 inline std::vector<std::pair<std::string, std::string>> parseNameValueList(const std::string& option,

@@ -36,6 +36,18 @@ if(NOT rc EQUAL 0 OR NOT out MATCHES "sensor: +not recorded in this file"
    OR NOT out MATCHES "pixels: +x 3..7, y 4..5" OR NOT out MATCHES "give --sensor=WxH \\(at least 8 x 6 for these events\\)")
   message(FATAL_ERROR "event_info --stats on a file without a sensor size: exit status ${rc} and: ${out}")
 endif()
+# A file that counts pixels from 1 on an 8 x 6 sensor: its last column (8) lies outside, no event lies in
+# column or row 0, and the text says to give --one-based; given it, nothing is outside.
+set(one_based "${WORK_DIR}/one_based.txt")
+file(WRITE "${one_based}" "8 6\n0.001 1 2 1\n0.002 8 6 0\n")
+execute_process(COMMAND "${EVENT_INFO}" "${one_based}" RESULT_VARIABLE rc OUTPUT_VARIABLE out)
+if(NOT rc EQUAL 0 OR NOT out MATCHES "rejected: +1 outside the sensor" OR NOT out MATCHES "give --one-based")
+  message(FATAL_ERROR "event_info on a file counted from 1: exit status ${rc} and: ${out}")
+endif()
+execute_process(COMMAND "${EVENT_INFO}" --one-based "${one_based}" RESULT_VARIABLE rc OUTPUT_VARIABLE out)
+if(NOT rc EQUAL 0 OR NOT out MATCHES "rejected: +0 outside the sensor" OR NOT out MATCHES "pixels: +x 0..7, y 1..5")
+  message(FATAL_ERROR "event_info --one-based on a file counted from 1: exit status ${rc} and: ${out}")
+endif()
 execute_process(COMMAND "${EVENT_INFO}" "${WORK_DIR}/missing.aedat4" RESULT_VARIABLE rc OUTPUT_VARIABLE out)
 if(NOT rc EQUAL 1 OR NOT out MATCHES "missing.aedat4: cannot open")
   message(FATAL_ERROR "a missing file gave exit status ${rc} and: ${out}")

@@ -2,7 +2,8 @@
 # dominant disparity against the known value (simulated: f * B / Z of the foreground plane; TUM Fan: 8 px,
 # shared/data/README.md; a list: any of a scene's surfaces) within DISPARITY_TOLERANCE px (default 1); optionally the ground-truth accuracy
 # (MIN_WITHIN1 % of estimates within 1 px, MIN_DENSITY %); optionally that every one of the file's
-# INPUT_EVENTS events is accounted for (processed, or reported as outside the sensor); optionally the median
+# INPUT_EVENTS events is accounted for (processed, or reported as outside the sensor: OUTSIDE_EVENTS of them,
+# when given); optionally the median
 # confidence of the left estimates (MEDIAN_CONFIDENCE "lo;hi", a recording's documented figure); optionally the
 # disparity the pair's events line up at (LINE_UP_DISPARITY, within 1 px) and a text the summary must hold
 # (SUMMARY_REGEX, e.g. a warning); and that the files REQUIRED_FILES names were written. EXPECTED_DISPARITY
@@ -59,6 +60,9 @@ if(DEFINED INPUT_EVENTS)
   math(EXPR total "${processed} + ${outside}")
   if(NOT total EQUAL INPUT_EVENTS)
     message(FATAL_ERROR "${processed} events processed + ${outside} outside the sensor = ${total}, the file has ${INPUT_EVENTS}")
+  endif()
+  if(DEFINED OUTSIDE_EVENTS AND NOT outside EQUAL OUTSIDE_EVENTS)
+    message(FATAL_ERROR "${outside} events outside the sensor, expected ${OUTSIDE_EVENTS}")
   endif()
   message("${processed} events processed, ${outside} outside the sensor: all ${INPUT_EVENTS} accounted for")
 endif()
