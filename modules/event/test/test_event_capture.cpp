@@ -305,6 +305,17 @@ TEST(Event_Capture_Text, two_files_open_as_a_stereo_pair)
     std::remove(r.c_str());
 }
 
+TEST(Event_Capture_Text, two_files_of_different_sensor_sizes_are_refused_naming_both)
+{
+    const std::string l = writeTempFile("8 6\n100 1 1 1\n", ".txt");
+    const std::string r = writeTempFile("10 6\n200 3 3 1\n", ".txt");
+    EventCapture cap;
+    expectErrorMentioning([&]() { cap.openStereo(l, r); }, { l, r, "8 x 6", "10 x 6" });
+    EXPECT_FALSE(cap.isOpened());
+    std::remove(l.c_str());
+    std::remove(r.c_str());
+}
+
 TEST(Event_Capture_Text, seek_by_time_forward_and_backward)
 {
     std::string content;

@@ -246,6 +246,11 @@ public:
         if (l->isStereo() || r->isStereo())
             CV_Error_(Error::StsBadArg, ("openStereo(%s, %s): each file must hold one camera",
                                          leftPath.c_str(), rightPath.c_str()));
+        const Size leftSize = l->sensorSize(), rightSize = r->sensorSize();
+        if (!leftSize.empty() && !rightSize.empty() && leftSize != rightSize)
+            CV_Error_(Error::StsBadArg, ("openStereo(%s, %s): the left file's sensor is %d x %d, the right one's %d x %d; "
+                                         "the cameras of a stereo pair have one size", leftPath.c_str(), rightPath.c_str(),
+                                         leftSize.width, leftSize.height, rightSize.width, rightSize.height));
         start(openStereoMerge(l, r, rightTimeOffset), leftPath + " + " + rightPath);
     }
 
