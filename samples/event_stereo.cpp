@@ -373,7 +373,9 @@ private:
         std::snprintf(text, sizeof(text), "offset %+.2f px, roll %+.4f rad: up to %.2f px at the sides (score %.2f, %zu events)",
                       a[0], a[1], sides, score, events_.size());
         rowResult_ = text;
-        if (score >= 0.4 && sides > 0.5)
+        if (score < kSampleMinRowScore)
+            rowResult_ += cv::format("; a score below %.1f: too uncertain to act on", kSampleMinRowScore);
+        else if (sides > 0.5)
             std::cerr << "\nevent_stereo: warning: the right camera's rows are off the left's by " << text
                       << "; check the rectification (matches are searched along the rows)\n";
     }

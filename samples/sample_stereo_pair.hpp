@@ -12,6 +12,9 @@
     (measured: 0.18-0.85 on the simulated scenes, 2 s each). */
 constexpr double kSampleMinLineUpScore = 0.1;
 
+/** Below this score (cv::event::estimateRowAlignment()) the events say too little about the rows to act on. */
+constexpr double kSampleMinRowScore = 0.4;
+
 /** The option that exchanges the cameras: of two files (--left/--right), of a text file's camera column, or of
     any other recording of both cameras. */
 inline std::string sampleCameraSwapAdvice(bool twoFiles, bool textFile, int leftCameraValue)
