@@ -517,6 +517,8 @@ TEST(StereoEventMatcher, bad_input_raises_errors_that_name_the_event)
     EXPECT_THROW(m->setPriorTolerance(-1), cv::Exception);
     EXPECT_THROW(m->setLookAhead(-1), cv::Exception);
     EXPECT_THROW(m->setLookAhead(2e6), cv::Exception);
+    EXPECT_THROW(m->setNoiseActiveTime(-1), cv::Exception);
+    EXPECT_THROW(m->setNoiseActiveTime(2e6), cv::Exception);
     EXPECT_THROW(m->setCalibration(StereoCalibration::fromRectified(Size(240, 180), 200, 0.1)), cv::Exception);
 }
 
@@ -538,6 +540,7 @@ TEST(StereoEventMatcher, parameters_round_trip_through_FileStorage)
     a->setLookAhead(2500);
     a->setFixedInterval(5000);
     a->setActiveDistance(1.5);
+    a->setNoiseActiveTime(4000);
     a->getLifetimeEstimator(0)->setWindowSize(7);
     a->setCalibration(StereoCalibration::fromRectified(Size(128, 96), 150, 0.2));
     FileStorage out(".yml", FileStorage::WRITE | FileStorage::MEMORY);
@@ -564,6 +567,7 @@ TEST(StereoEventMatcher, parameters_round_trip_through_FileStorage)
     EXPECT_EQ(b->getLookAhead(), 2500);
     EXPECT_EQ(b->getFixedInterval(), 5000);
     EXPECT_EQ(b->getActiveDistance(), 1.5);
+    EXPECT_EQ(b->getNoiseActiveTime(), 4000);
     EXPECT_EQ(b->getLifetimeEstimator(1)->getWindowSize(), 7);
     EXPECT_DOUBLE_EQ(b->getCalibration().baseline(), 0.2);
 }
@@ -644,6 +648,60 @@ TEST(StereoEventMatcher, events_stay_active_for_the_active_distance_in_lifetimes
         ASSERT_EQ((int)shown.size(), expected) << "active distance " << distance;
         EXPECT_EQ(shown.back(), newest);
         EXPECT_EQ(shown.front(), newest - expected + 1);
+    }
+}
+
+// A 3-pixel segment in the right camera after the cold start: each event has 2 neighbours in its 5 x 5 window,
+// fewer than a plane needs (minInliers 5), so every one is noise (lifetime 0). The same segment in the left
+// camera 12 px further right, 5 ms later, finds it active only when noiseActiveTime exceeds 5 ms: at 10 ms it
+// matches at 12 px; at 0 (the default, the paper) the right segment left nothing to match
+// (STEREO_NO_COUNTERPART). 11 ms later it is gone either way. An edge in other rows (more than the plane fit's
+// reach away) runs the stream's time on.
+TEST(StereoEventMatcher, events_without_a_lifetime_stay_in_the_descriptors_for_the_noise_active_time)
+{
+    const Size size(64, 24);
+    std::vector<Event> ev;
+    for (const Event& e : edgePair(size, 12, 500, 300))
+        if (e.y < 10)
+            ev.push_back(e);
+    const int64 tNoise = ev.front().t + 110000;  // past the cold start (the plane fit's 100 ms)
+    const Point left(40, 20);
+    const int64 lefts[2] = { tNoise + 5000, tNoise + 11000 };
+    for (int dy = -1; dy <= 1; dy++)
+    {
+        ev.push_back(Event(tNoise, (short)(left.x - 12), (short)(left.y + dy), POLARITY_ON, CAMERA_RIGHT));
+        for (int64 t : lefts)
+            ev.push_back(Event(t, (short)left.x, (short)(left.y + dy), POLARITY_ON, CAMERA_LEFT));
+    }
+    std::stable_sort(ev.begin(), ev.end(), [](const Event& a, const Event& b) { return a.t < b.t; });
+    for (const double activeUs : { 0.0, 10000.0 })
+    {
+        Ptr<StereoEventMatcher> m = StereoEventMatcher::create(size, STEREO_COUPLED);
+        if (activeUs == 0)
+            ASSERT_EQ(m->getNoiseActiveTime(), 0);
+        m->setNoiseActiveTime(activeUs);
+        StereoEventEstimate s, middle[2];
+        for (const Event& e : ev)
+        {
+            m->processEvent(e, s);
+            if (e.x == left.x - 12 && e.y >= left.y - 1 && e.y <= left.y + 1)
+            {
+                EXPECT_EQ(s.lifetime, 0.f) << activeUs;
+                EXPECT_TRUE((s.flags & STEREO_NOISE) != 0) << activeUs;
+            }
+            for (int k = 0; k < 2; k++)
+                if (e.camera == CAMERA_LEFT && e.x == left.x && e.y == left.y && e.t == lefts[k])
+                    middle[k] = s;
+        }
+        if (activeUs > 5000)
+            EXPECT_EQ(middle[0].disparity, 12.f);
+        else
+        {
+            EXPECT_LT(middle[0].disparity, 0.f);
+            EXPECT_TRUE((middle[0].flags & STEREO_NO_COUNTERPART) != 0);
+        }
+        EXPECT_LT(middle[1].disparity, 0.f) << activeUs;
+        EXPECT_TRUE((middle[1].flags & STEREO_NO_COUNTERPART) != 0) << activeUs;
     }
 }
 

@@ -206,6 +206,7 @@ void StereoEventMatcherImpl::processAdmitted(const Event& e, Point r, int64 cold
     }
 
     int64 activeFor = 0;
+    bool noiseActive = false;
     if (mode_ == STEREO_FIXED_INTERVAL)
         activeFor = fixedInterval_;
     else if (est.lifetime > 0)
@@ -218,6 +219,12 @@ void StereoEventMatcherImpl::processAdmitted(const Event& e, Point r, int64 cold
         // own but stays visible to matching as if its lifetime were the fixed interval (FIXED_INTERVAL's
         // activity, which needs no history).
         activeFor = activeSpan(fixedInterval_);
+    }
+    else
+    {
+        // No plane: on a weak edge, where only some pixels fire, often the edge's own event (setNoiseActiveTime).
+        activeFor = noiseActiveTime_;
+        noiseActive = true;
     }
     // A later event of this pixel and polarity, already in the map (look-ahead), keeps it active until its
     // own decision.
@@ -249,7 +256,10 @@ void StereoEventMatcherImpl::processAdmitted(const Event& e, Point r, int64 cold
         est.flags |= STEREO_NOISE;
         est.flow = Vec2f();
     }
-    remember(c, r, e.t, activeFor, est.disparity);
+    // A noise event's disparity has no plane behind it, and noise finds some candidate: it joins the
+    // descriptors (above) but not the neighbours' estimates that the prior, the left-right check and the
+    // border's estimates read.
+    remember(c, r, e.t, noiseActive ? 0 : activeFor, est.disparity);
 }
 
 void StereoEventMatcherImpl::activateUndecided(int c, Point r, int p)
@@ -696,6 +706,14 @@ void StereoEventMatcherImpl::setLookAhead(double us)
     lookAhead_ = (int64)std::llround(us);
 }
 
+void StereoEventMatcherImpl::setNoiseActiveTime(double us)
+{
+    if (!(us >= 0 && us <= 1e6))
+        CV_Error_(Error::StsBadArg, ("StereoEventMatcher: noise active time %g us; must be 0..1e6 us (0: an event "
+                                     "without a lifetime is not active)", us));
+    noiseActiveTime_ = (int64)std::llround(us);
+}
+
 void StereoEventMatcherImpl::setFrameWindow(double us)
 {
     frameWindow_ = duration(us, "frame window");
@@ -728,7 +746,7 @@ void StereoEventMatcherImpl::write(FileStorage& fs) const
        << "maxLifetimeCopies" << maxLifetimeCopies_
        << "priorTolerance" << priorTolerance_ << "lookAhead" << (double)lookAhead_ << "fixedInterval" << (double)fixedInterval_
        << "frameWindow" << (double)frameWindow_ << "maxLifetime" << (double)maxLifetime_ << "activeDistance"
-       << activeDistance_;
+       << activeDistance_ << "noiseActiveTime" << (double)noiseActiveTime_;
     fs << "lifetimeEstimator" << "{";
     estimators_[0]->write(fs);
     fs << "}";
@@ -770,6 +788,7 @@ void StereoEventMatcherImpl::read(const FileNode& fn)
     setFrameWindow(num("frameWindow", (double)frameWindow_));
     setMaxLifetime(num("maxLifetime", (double)maxLifetime_));
     setActiveDistance(num("activeDistance", activeDistance_));
+    setNoiseActiveTime(num("noiseActiveTime", (double)noiseActiveTime_));
     if (!fn["lifetimeEstimator"].empty())
         for (const Ptr<LifetimeEstimator>& est : estimators_)
             est->read(fn["lifetimeEstimator"]);

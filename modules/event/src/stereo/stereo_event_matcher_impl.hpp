@@ -132,6 +132,8 @@ public:
     double getMaxLifetime() const CV_OVERRIDE { return (double)maxLifetime_; }
 
     void setMaxLifetime(double us) CV_OVERRIDE { maxLifetime_ = duration(us, "max lifetime"); }
+    double getNoiseActiveTime() const CV_OVERRIDE { return (double)noiseActiveTime_; }
+    void setNoiseActiveTime(double us) CV_OVERRIDE;
     double getActiveDistance() const CV_OVERRIDE { return activeDistance_; }
 
     void setActiveDistance(double px) CV_OVERRIDE;
@@ -288,7 +290,7 @@ private:
     int minDisparity_ = 0, maxDisparity_ = 40;
     int descriptorWindow_ = 3, maxVectorLength_ = 3, costWindow_ = 17, lifetimeWindow_ = 9, aggregationWindow_ = 31;
     int uniquenessRatio_ = 15;
-    int64 fixedInterval_ = 10000, frameWindow_ = 33000, maxLifetime_ = 100000;
+    int64 fixedInterval_ = 10000, frameWindow_ = 33000, maxLifetime_ = 100000, noiseActiveTime_ = 0;
     double activeDistance_ = 2.5;
     double minConfidence_ = 0, matchedLifetimeConfidence_ = 0.15;
     int maxLifetimeCopies_ = 1;

@@ -135,8 +135,13 @@ Between its arrival and its decision (getLookAhead()) every event is active.
 create() or reset(), or after a gap in the stream longer than that window), the surface cannot yet hold the
 history a fit needs. An event that gets no lifetime then stays active as if getFixedInterval() were its
 lifetime (for getActiveDistance() fixed intervals, 25 ms at the defaults), without a lifetime of its own,
-so that both sensors have something to match against from the start; afterwards such an event is
-inactive, as the paper has it.
+so that both sensors have something to match against from the start.
+
+**Noise** (COUPLED, DECOUPLED): afterwards an event whose plane fit finds no plane (STEREO_NOISE, lifetime 0)
+is inactive, as the paper has it, unless getNoiseActiveTime() is set: then it stays in the descriptors that
+long (its own disparity does not count among the neighbours' estimates). On weak edges, where only some
+pixels fire on each crossing, the fit calls many of the edge's own events noise, and left out of the
+descriptors they take the edge's structure with them.
 
 Memory is O(sensor pixels): the per-pixel maps, an expiry heap over pixels (one per row band with
 setNumThreads()) and the two LifetimeEstimators.
@@ -266,6 +271,11 @@ public:
     descriptors. */
     CV_WRAP virtual double getMaxLifetime() const = 0;
     CV_WRAP virtual void setMaxLifetime(double us) = 0;
+    /** @brief COUPLED, DECOUPLED: how long [us] an event whose lifetime estimate says noise (no plane) stays
+    active in the descriptors after the cold start (default 0: not at all, the paper's method; 0..1e6). Its
+    disparity is output but is not one of the neighbours' estimates (temporal prior, left-right check). */
+    CV_WRAP virtual double getNoiseActiveTime() const = 0;
+    CV_WRAP virtual void setNoiseActiveTime(double us) = 0;
     /** @brief COUPLED, DECOUPLED: how far [px] an event's edge moves while the event stays active for
     matching, i.e. for how many lifetimes (the lifetime is the time the edge takes to move one pixel), up to
     getMaxLifetime() (default 2.5; 0.1..100). The paper's "active within its lifetime" is 1. A trail of a
