@@ -168,6 +168,7 @@ TEST(Event_Extremes, all_events_at_one_pixel)
     {
         Ptr<StereoEventMatcher> m = StereoEventMatcher::create(size, mode);
         m->setLookAhead(0);  // decided on arrival: an event sees only the events before it
+        m->setNoiseActiveTime(0);  // the paper: an event without a lifetime is inactive after the cold start
         Mat d, slt, flags, depth, sflow;
         m->process(stereo, d, slt, flags, depth, sflow);
         const std::string name = getStereoModeName(mode);

@@ -654,8 +654,8 @@ TEST(StereoEventMatcher, events_stay_active_for_the_active_distance_in_lifetimes
 // A 3-pixel segment in the right camera after the cold start: each event has 2 neighbours in its 5 x 5 window,
 // fewer than a plane needs (minInliers 5), so every one is noise (lifetime 0). The same segment in the left
 // camera 12 px further right, 5 ms later, finds it active only when noiseActiveTime exceeds 5 ms: at 10 ms it
-// matches at 12 px; at 0 (the default, the paper) the right segment left nothing to match
-// (STEREO_NO_COUNTERPART). 11 ms later it is gone either way. An edge in other rows (more than the plane fit's
+// matches at 12 px; at 0 (the paper) the right segment left nothing to match (STEREO_NO_COUNTERPART). 11 ms
+// later it is gone at 10 ms, and still there at the default 25 ms. An edge in other rows (more than the plane fit's
 // reach away) runs the stream's time on.
 TEST(StereoEventMatcher, events_without_a_lifetime_stay_in_the_descriptors_for_the_noise_active_time)
 {
@@ -667,6 +667,7 @@ TEST(StereoEventMatcher, events_without_a_lifetime_stay_in_the_descriptors_for_t
     const int64 tNoise = ev.front().t + 110000;  // past the cold start (the plane fit's 100 ms)
     const Point left(40, 20);
     const int64 lefts[2] = { tNoise + 5000, tNoise + 11000 };
+    ASSERT_EQ(StereoEventMatcher::create(size, STEREO_COUPLED)->getNoiseActiveTime(), 25000);
     for (int dy = -1; dy <= 1; dy++)
     {
         ev.push_back(Event(tNoise, (short)(left.x - 12), (short)(left.y + dy), POLARITY_ON, CAMERA_RIGHT));
@@ -674,11 +675,9 @@ TEST(StereoEventMatcher, events_without_a_lifetime_stay_in_the_descriptors_for_t
             ev.push_back(Event(t, (short)left.x, (short)(left.y + dy), POLARITY_ON, CAMERA_LEFT));
     }
     std::stable_sort(ev.begin(), ev.end(), [](const Event& a, const Event& b) { return a.t < b.t; });
-    for (const double activeUs : { 0.0, 10000.0 })
+    for (const double activeUs : { 0.0, 10000.0, 25000.0 })
     {
         Ptr<StereoEventMatcher> m = StereoEventMatcher::create(size, STEREO_COUPLED);
-        if (activeUs == 0)
-            ASSERT_EQ(m->getNoiseActiveTime(), 0);
         m->setNoiseActiveTime(activeUs);
         StereoEventEstimate s, middle[2];
         for (const Event& e : ev)
@@ -700,8 +699,13 @@ TEST(StereoEventMatcher, events_without_a_lifetime_stay_in_the_descriptors_for_t
             EXPECT_LT(middle[0].disparity, 0.f);
             EXPECT_TRUE((middle[0].flags & STEREO_NO_COUNTERPART) != 0);
         }
-        EXPECT_LT(middle[1].disparity, 0.f) << activeUs;
-        EXPECT_TRUE((middle[1].flags & STEREO_NO_COUNTERPART) != 0) << activeUs;
+        if (activeUs > 11000)
+            EXPECT_EQ(middle[1].disparity, 12.f);
+        else
+        {
+            EXPECT_LT(middle[1].disparity, 0.f) << activeUs;
+            EXPECT_TRUE((middle[1].flags & STEREO_NO_COUNTERPART) != 0) << activeUs;
+        }
     }
 }
 

@@ -290,7 +290,7 @@ private:
     int minDisparity_ = 0, maxDisparity_ = 40;
     int descriptorWindow_ = 3, maxVectorLength_ = 3, costWindow_ = 17, lifetimeWindow_ = 9, aggregationWindow_ = 31;
     int uniquenessRatio_ = 15;
-    int64 fixedInterval_ = 10000, frameWindow_ = 33000, maxLifetime_ = 100000, noiseActiveTime_ = 0;
+    int64 fixedInterval_ = 10000, frameWindow_ = 33000, maxLifetime_ = 100000, noiseActiveTime_ = 25000;
     double activeDistance_ = 2.5;
     double minConfidence_ = 0, matchedLifetimeConfidence_ = 0.15;
     int maxLifetimeCopies_ = 1;

@@ -138,10 +138,10 @@ lifetime (for getActiveDistance() fixed intervals, 25 ms at the defaults), witho
 so that both sensors have something to match against from the start.
 
 **Noise** (COUPLED, DECOUPLED): afterwards an event whose plane fit finds no plane (STEREO_NOISE, lifetime 0)
-is inactive, as the paper has it, unless getNoiseActiveTime() is set: then it stays in the descriptors that
-long (its own disparity does not count among the neighbours' estimates). On weak edges, where only some
-pixels fire on each crossing, the fit calls many of the edge's own events noise, and left out of the
-descriptors they take the edge's structure with them.
+stays in the descriptors for getNoiseActiveTime(), 25 ms by default, as long as during the cold start; its
+own disparity does not count among the neighbours' estimates. On weak edges, where only some pixels fire on
+each crossing, the fit calls many of the edge's own events noise, and left out of the descriptors they take
+the edge's structure with them. The paper leaves them out: setNoiseActiveTime(0).
 
 Memory is O(sensor pixels): the per-pixel maps, an expiry heap over pixels (one per row band with
 setNumThreads()) and the two LifetimeEstimators.
@@ -272,8 +272,9 @@ public:
     CV_WRAP virtual double getMaxLifetime() const = 0;
     CV_WRAP virtual void setMaxLifetime(double us) = 0;
     /** @brief COUPLED, DECOUPLED: how long [us] an event whose lifetime estimate says noise (no plane) stays
-    active in the descriptors after the cold start (default 0: not at all, the paper's method; 0..1e6). Its
-    disparity is output but is not one of the neighbours' estimates (temporal prior, left-right check). */
+    active in the descriptors after the cold start (default 25000; 0..1e6; 0: not at all, the paper's
+    method). Its disparity is output but is not one of the neighbours' estimates (temporal prior, left-right
+    check). */
     CV_WRAP virtual double getNoiseActiveTime() const = 0;
     CV_WRAP virtual void setNoiseActiveTime(double us) = 0;
     /** @brief COUPLED, DECOUPLED: how far [px] an event's edge moves while the event stays active for
