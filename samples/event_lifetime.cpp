@@ -161,9 +161,9 @@ int main(int argc, char** argv)
                   << "; " << processed / std::max(1e-9, secs) / 1e6 << " Mev/s including I/O and pictures\n";
         const int64 outside = (int64)cap.get(EVENT_CAP_PROP_REJECTED_OUTSIDE);
         if (outside > 0)
-            std::cerr << "event_lifetime: warning: " << outside << " input events lie outside the " << size.width
-                      << " x " << size.height << " sensor and were not processed ("
-                      << outsideEventsAdvice(cap.getBackendName() == "TEXT", cmd.has("one-based"), touchesZero) << ")\n";
+            std::cerr << "event_lifetime: warning: "
+                      << outsideEventsWarning(outside, size.width, size.height, cap.getBackendName() == "TEXT",
+                                              cmd.has("one-based"), touchesZero) << "\n";
         // No ground truth needed: lifetimes that agree with the recording give a median near 1.
         std::cout << format("lifetime check: the edge reached the next pixel after %.2f lifetimes (median; quartiles "
                             "%.2f / %.2f) over %.0f events\n", check->getRatioQuantile(0.5),

@@ -151,8 +151,7 @@ int main(int argc, char** argv)
             Mat frame = render(*surface[0], now, o);
             if (stereo)
                 hconcat(frame, render(*surface[1], now, o), frame);
-            if (zoom > 1)
-                frame = sampleEnlarge(frame, zoom);
+            frame = sampleEnlarge(frame, zoom);
             if (!o.video.empty())
             {
                 if (!video.isOpened() &&

@@ -601,9 +601,9 @@ int main(int argc, char** argv)
         imwrite(opt.output + "/disparity_histogram.png", histogramPicture(histogram, opt.minDisparity));
         const int64 outside = (int64)source.rejectedOutside(), backwards = (int64)source.timeBackwards();
         if (outside > 0)
-            std::cerr << "event_stereo: warning: " << outside << " input events lie outside the " << size.width
-                      << " x " << size.height << " sensor and were not processed ("
-                      << outsideEventsAdvice(source.isText(), opt.oneBased, source.eventsTouchZero()) << ")\n";
+            std::cerr << "event_stereo: warning: "
+                      << outsideEventsWarning(outside, size.width, size.height, source.isText(), opt.oneBased,
+                                              source.eventsTouchZero()) << "\n";
         auto pct = [](int64 a, int64 b) { return b ? 100.0 * (double)a / (double)b : 0.0; };
         std::ostringstream text;
         text << "# event_stereo summary\n\n| | |\n|---|---|\n"

@@ -205,9 +205,9 @@ int main(int argc, char** argv)
         }
         const int64 outside = (int64)cap.get(EVENT_CAP_PROP_REJECTED_OUTSIDE);
         if (outside > 0)
-            std::cerr << "event_stereo_overview: warning: " << outside << " input events lie outside the " << size.width
-                      << " x " << size.height << " sensor and were not read ("
-                      << outsideEventsAdvice(cap.getBackendName() == "TEXT", opt.oneBased, touchesZero) << ")\n";
+            std::cerr << "event_stereo_overview: warning: "
+                      << outsideEventsWarning(outside, size.width, size.height, cap.getBackendName() == "TEXT",
+                                              opt.oneBased, touchesZero) << "\n";
         std::ofstream summary(opt.output + "/summary.md");
         std::ostringstream text;
         text << "# Stereo recording overview\n\n"

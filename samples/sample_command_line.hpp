@@ -40,6 +40,16 @@ inline std::string outsideEventsAdvice(bool textFile, bool oneBased, bool events
     return "--sensor=WxH sets the size";
 }
 
+/** The warning for @p outside input events that lay outside the @p sensor and were not processed, with
+    outsideEventsAdvice(). */
+inline std::string outsideEventsWarning(long long outside, int width, int height, bool textFile, bool oneBased,
+                                        bool eventsTouchZero)
+{
+    return std::to_string(outside) + " input events lie outside the " + std::to_string(width) + " x " +
+           std::to_string(height) + " sensor and were not processed (" +
+           outsideEventsAdvice(textFile, oneBased, eventsTouchZero) + ")";
+}
+
 /** True when an event of @p events lies in column 0 or row 0 (see outsideEventsAdvice()). */
 template <typename EventT>
 inline bool touchesColumnOrRowZero(const std::vector<EventT>& events)
