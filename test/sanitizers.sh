@@ -33,18 +33,27 @@ export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1:strict_string_checks=1
 export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
 export LSAN_OPTIONS=suppressions="$here/lsan.supp"
 # Every unit test except the accuracy figures on long simulated runs (4-15 s each in Release, 6-11 times that
-# here: the row alignment test took 35 s, the temporal prior's 69 s). They run in the normal unit test job;
+# here: the row alignment test took 35 s, the temporal prior's 69 s, the lifetime copies on changing speeds 50 s). They run in the normal unit test job;
 # under the sanitizers their code paths are taken by the shorter tests (the row bands' scenes, process()
 # against processEvent(), the look-ahead and border closed forms) and by the realistic scene below.
-accuracy_only='StereoEventMatcher.coupled_beats_frame_sgbm_on_textured_scenes'
-accuracy_only+=':StereoEventMatcher.lifetime_modes_estimate_as_many_events_as_fixed_interval_from_the_start'
-accuracy_only+=':StereoEventMatcher.textured_scenes_meet_the_accuracy_and_density_targets'
-accuracy_only+=':StereoEventMatcher_Confidence.temporal_prior_raises_the_matching_rate_on_sparse_edges'
-accuracy_only+=':StereoEventMatcher_Confidence.rejection_is_the_threshold_and_the_confidence_ranks_the_estimates'
-accuracy_only+=':StereoEventMatcher_LookAhead.raises_the_matching_rate_on_low_contrast'
-accuracy_only+=':Event_RowAlignment.finds_the_simulated_row_offset_and_roll'
-accuracy_only+=':StereoEventMatcher.coupled_lifetimes_passed_on_without_limit_keep_the_start_up_ones'
-"$build/modules/event/opencv_test_event" --gtest_filter="-$accuracy_only"
+skipped='StereoEventMatcher.coupled_beats_frame_sgbm_on_textured_scenes'
+skipped+=':StereoEventMatcher.lifetime_modes_estimate_as_many_events_as_fixed_interval_from_the_start'
+skipped+=':StereoEventMatcher.textured_scenes_meet_the_accuracy_and_density_targets'
+skipped+=':StereoEventMatcher_Confidence.temporal_prior_raises_the_matching_rate_on_sparse_edges'
+skipped+=':StereoEventMatcher_Confidence.rejection_is_the_threshold_and_the_confidence_ranks_the_estimates'
+skipped+=':StereoEventMatcher_LookAhead.raises_the_matching_rate_on_low_contrast'
+skipped+=':Event_RowAlignment.finds_the_simulated_row_offset_and_roll'
+skipped+=':StereoEventMatcher.coupled_lifetimes_passed_on_without_limit_keep_the_start_up_ones'
+skipped+=':StereoEventMatcher.coupled_lifetimes_are_refitted_after_a_copy_on_changing_speeds'
+skipped+=':StereoEventMatcher.coupled_leads_frame_sgbm_by_ten_points_on_the_near_walker'
+# The row bands against one thread: two of the six scene x mode cases (two_planes COUPLED, cluttered
+# FIXED_INTERVAL; 25-35 s each here). The bands' code is the same in every mode; the modes' own code runs
+# under the sanitizers in the single-thread tests, and cluttered COUPLED under TSan below.
+skipped+=':StereoEventMatcher_RowBands.give_the_results_of_one_thread_bit_for_bit/1'
+skipped+=':StereoEventMatcher_RowBands.give_the_results_of_one_thread_bit_for_bit/2'
+skipped+=':StereoEventMatcher_RowBands.give_the_results_of_one_thread_bit_for_bit/3'
+skipped+=':StereoEventMatcher_RowBands.give_the_results_of_one_thread_bit_for_bit/4'
+"$build/modules/event/opencv_test_event" --gtest_filter="-$skipped"
 echo "== sanitizers: samples on the simulator and on every real recording"
 work=$(mktemp -d)
 "$build/samples/event_stereo_overview" --scene=cluttered --simulate-ms=150 --output="$work/overview" > /dev/null
