@@ -16,7 +16,7 @@ namespace detail {
 /** A min-heap of expiry times keyed by a fixed id range (pixel x polarity), with update and removal in
 O(log n). One entry per id: a pixel that fires again moves its entry instead of adding one, so the heap
 never holds more than the number of ids, however many events arrive (memory O(sensor pixels)). */
-class ExpiryHeap
+class alignas(64) ExpiryHeap  // a cache line each: the heaps of neighbouring row bands change on two threads
 {
 public:
     void reset(int ids)

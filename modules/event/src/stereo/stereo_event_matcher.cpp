@@ -391,7 +391,9 @@ void StereoEventMatcherImpl::processOperations(const Mat_<Event>& ev, const Stor
     const int count = (int)operations_.size();
     // Decision: the event's match, lifetime and final activity (processEvent after admission). Arrival (look-ahead
     // only): the event becomes active in its sensor's map, for the decisions of the events before it.
-    auto run = [&](int k, MatchScratch& s) {
+    // Events decided on a band's thread keep their estimates in its scratch until the bands are done: the
+    // outputs of events of both bands share cache lines, which the threads would otherwise pass to and fro.
+    auto run = [&](int k, MatchScratch& s, bool keep) {
         const int i = operations_[(size_t)k] >> 1;
         const Event& e = ev(i);
         const Admission& a = admitted_[(size_t)i];
@@ -407,7 +409,10 @@ void StereoEventMatcherImpl::processOperations(const Mat_<Event>& ev, const Stor
         StereoEventEstimate est;
         est.rectified = a.rectified;
         processAdmitted(e, a.rectified, a.coldStartEnd, laterPending, s, est);
-        store(i, est);
+        if (keep)
+            s.decided.emplace_back(i, est);
+        else
+            store(i, est);
     };
     std::exception_ptr failure;
     if (numThreads_ == 1 || n < MIN_EVENTS_FOR_BANDS)
@@ -421,7 +426,7 @@ void StereoEventMatcherImpl::processOperations(const Mat_<Event>& ev, const Stor
                     maps_[0].expireUntil(operationTimes_[(size_t)k]);
                     maps_[1].expireUntil(operationTimes_[(size_t)k]);
                 }
-                run(k, scratch_);
+                run(k, scratch_, false);
             }
         }
         catch (...)
@@ -437,8 +442,9 @@ void StereoEventMatcherImpl::processOperations(const Mat_<Event>& ev, const Stor
         const int bands = std::max(1, std::min(numThreads_, size_.height / (conflictRows + 1)));
         const std::vector<int> first = RowBandScheduler::splitRows(operationRows_, count, size_.height, bands,
                                                                    conflictRows + 1);
-        maps_[0].setRowBands(first);
-        maps_[1].setRowBands(first);
+        const std::vector<int> segments = RowBandScheduler::splitSegments(first, size_.height, conflictRows);
+        maps_[0].setRowBands(segments);
+        maps_[1].setRowBands(segments);
         if (bandScratch_.size() < (size_t)bands)
         {
             bandScratch_.resize((size_t)bands);
@@ -446,15 +452,15 @@ void StereoEventMatcherImpl::processOperations(const Mat_<Event>& ev, const Stor
                 sizeScratch(s);
         }
         RowBandScheduler::Operations ops;
-        // The band's earliest expiry over both maps (the left map's first on a tie); the token is the map.
-        ops.earliestExpiry = [this](int b, int64& time, int& row, int& map) {
+        // The segment's earliest expiry over both maps (the left map's first on a tie); the token is the map.
+        ops.earliestExpiry = [this](int segment, int64& time, int& row, int& map) {
             bool found = false;
             time = std::numeric_limits<int64>::max();
             for (int c = 0; c < 2; c++)
             {
                 int64 t;
                 int y;
-                if (maps_[c].earliestExpiry(b, t, y) && t < time)
+                if (maps_[c].earliestExpiry(segment, t, y) && t < time)
                 {
                     map = c;
                     time = t;
@@ -464,9 +470,15 @@ void StereoEventMatcherImpl::processOperations(const Mat_<Event>& ev, const Stor
             }
             return found;
         };
-        ops.expire = [this](int b, int map) { maps_[map].expireEarliest(b); };
-        ops.process = [&](int b, int k) { run(k, bandScratch_[(size_t)b]); };
+        ops.expire = [this](int segment, int map) { maps_[map].expireEarliest(segment); };
+        ops.process = [&](int b, int k) { run(k, bandScratch_[(size_t)b], true); };
         failure = bands_.run(first, size_.height, conflictRows, operationRows_, operationTimes_, count, ops);
+        for (int b = 0; b < bands; b++)
+        {
+            for (const std::pair<int, StereoEventEstimate>& d : bandScratch_[(size_t)b].decided)
+                store(d.first, d.second);
+            bandScratch_[(size_t)b].decided.clear();
+        }
         for (int b = 0; b < bands; b++)
             for (int c = 0; c < 2; c++)
                 addStatusCounts(*estimators_[c], bandScratch_[(size_t)b].lifetimes[c]);

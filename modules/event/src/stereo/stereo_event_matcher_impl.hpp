@@ -37,8 +37,9 @@ column, and their costs (the first `count` of each, sized for the whole disparit
 window's activity per row and its active events (matchedLifetime); the left-right check's disparities; the lifetime
 estimators' scratch, per camera.
 Near the other image's border (scoreSeenColumns): the candidates' scores, the event's own mass per column of
-the window and the mass of its first k unseen columns. */
-struct MatchScratch
+the window and the mass of its first k unseen columns. Aligned to cache lines: each row band's thread writes
+its own. */
+struct alignas(64) MatchScratch
 {
     int count = 0;
     std::vector<int> candidates;
@@ -52,6 +53,7 @@ struct MatchScratch
     std::vector<uint64> matchedKeys;
     std::vector<float> disparities;
     LifetimeScratch lifetimes[2];
+    std::vector<std::pair<int, StereoEventEstimate>> decided;  // a row band's estimates, stored after the run
 };
 
 /** StereoEventMatcher's implementation. Its members live in three files by concern:

@@ -27,7 +27,8 @@ Activating an event can only shorten vectors within the maximum length of it; de
 re-searches only the pixels whose nearest event it was. Each vector change moves one vote in N x N
 descriptors. The descriptor map has a zero margin around the image so that cost windows can run past the
 border without checks. Expiry: an ExpiryHeap over pixel x polarity, one per band of rows (setRowBands), so
-that StereoEventMatcher's row bands each take their own expiries in time order. The map's state depends only
+that StereoEventMatcher's row bands each take their own expiries in time order (each band's zones next to its
+neighbours have heaps of their own: RowBandScheduler::splitSegments). The map's state depends only
 on which events are active (and their lifetimes and flows), not on the order in which they were activated or
 deactivated: expiries due at the same moment may be taken in any order, band by band.
 
