@@ -201,6 +201,9 @@ void RowBandScheduler::runBand(int b, int conflictRows, const std::vector<int>& 
             break;
         const bool isExpiry = expiryKeyNow < eventKey;
         const int y = isExpiry ? cache.row[earliest] : rows[(size_t)i];
+        // An expiry outside its band would break the waits (and hang them): the caller's heaps must follow
+        // splitSegments.
+        CV_Assert(y >= me.top && y < me.bottom);
         const bool inZone[2] = { y < me.zoneEnd[0], y >= me.zoneBegin[1] };
         for (int z = 0; z < 2; z++)
             if (inZone[z])

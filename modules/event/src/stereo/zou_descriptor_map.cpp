@@ -79,11 +79,16 @@ void ZouDescriptorMap::reset()
     resetExpiries();
 }
 
-void ZouDescriptorMap::resetExpiries()
+void ZouDescriptorMap::assignRowBands()
 {
     rowBand_.assign((size_t)size_.height, 0);
     for (size_t b = 1; b < bandFirstRow_.size(); b++)
         std::fill(rowBand_.begin() + bandFirstRow_[b], rowBand_.end(), (uchar)b);
+}
+
+void ZouDescriptorMap::resetExpiries()
+{
+    assignRowBands();
     expiry_.resize(bandFirstRow_.size());
     for (ExpiryHeap& heap : expiry_)
         heap.reset((int)active_.size());
@@ -96,14 +101,28 @@ void ZouDescriptorMap::setRowBands(const std::vector<int>& firstRows)
         CV_Assert(firstRows[b] > firstRows[b - 1]);
     if (firstRows == bandFirstRow_)
         return;
-    // Move the pending expiries to the heaps of their new bands.
-    std::vector<std::pair<int, int64>> pending;
-    for (const ExpiryHeap& heap : expiry_)
-        for (size_t i = 0; i < heap.size(); i++)
-            pending.emplace_back(heap.idAt(i), heap.timeAt(i));
+    // Move the pending expiries whose band changed to the heaps of their new bands. With as many bands as
+    // before the heaps stay (the row bands move a little with every packet; a heap's reset writes a slot for
+    // every pixel).
+    std::vector<std::pair<int, int64>> moving;
+    const bool sameCount = firstRows.size() == bandFirstRow_.size();
     bandFirstRow_ = firstRows;
-    resetExpiries();
-    for (const std::pair<int, int64>& e : pending)
+    if (sameCount)
+        assignRowBands();
+    for (size_t b = 0; b < expiry_.size(); b++)
+    {
+        ExpiryHeap& heap = expiry_[b];
+        const size_t first = moving.size();
+        for (size_t i = 0; i < heap.size(); i++)
+            if (!sameCount || (size_t)bandOfRow(rowOf(heap.idAt(i))) != b)
+                moving.emplace_back(heap.idAt(i), heap.timeAt(i));
+        if (sameCount)
+            for (size_t i = first; i < moving.size(); i++)
+                heap.remove(moving[i].first);
+    }
+    if (!sameCount)
+        resetExpiries();
+    for (const std::pair<int, int64>& e : moving)
         heapOfRow(rowOf(e.first)).set(e.first, e.second);
 }
 

@@ -86,6 +86,9 @@ private:
     int id(int x, int y, int p) const { return (p * paddedHeight_ + y + border_) * paddedWidth_ + x + border_; }
     int rowOf(int id) const { return (id / paddedWidth_) % paddedHeight_ - border_; }
     ExpiryHeap& heapOfRow(int y) { return expiry_[(size_t)rowBand_[(size_t)y]]; }
+    int bandOfRow(int y) const { return rowBand_[(size_t)y]; }
+    // rowBand_ from bandFirstRow_.
+    void assignRowBands();
     void deactivateId(int id);
     // Empty expiry heaps, one per band of bandFirstRow_.
     void resetExpiries();
