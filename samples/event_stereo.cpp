@@ -50,8 +50,8 @@ struct Options
     Size sensor;
     int leftCameraValue = 0, minDisparity = 0, maxDisparity = 0;
     // Row bands on their own threads (StereoEventMatcher::setNumThreads): the same results as one thread, but
-    // slower wherever the events crowd around the bands' boundary (a figure or an object in the middle of the
-    // view, most real scenes), so one thread unless asked.
+    // little faster wherever the events crowd around the bands' boundary (a figure or an object in the middle
+    // of the view, most real scenes), so one thread unless asked.
     int threads = 1;
     double frameMs = 0, durationMs = 0, rightTimeOffsetMs = 0;
 };
@@ -71,7 +71,7 @@ const char* const keys =
     "{min-disparity     | 0          | smallest disparity searched [px]}"
     "{max-disparity     | 40         | largest disparity searched [px]}"
     "{frame-ms          | 33         | window of one video frame [ms]}"
-    "{threads           | 1          | row bands on their own threads (the same results; on two cores no faster, Threads in doc/stereo.md); 0: the CPUs, at most 4}"
+    "{threads           | 1          | row bands on their own threads (the same results; on two cores 1.1-1.5x on realistic scenes, Threads in doc/stereo.md); 0: the CPUs, at most 4}"
     "{no-csv            | false      | do not write events.csv}"
     "{all-frames        | false      | a PNG for every window, not a handful}"
     "{output            | output/event_stereo | output folder}"

@@ -19,10 +19,11 @@ never holds more than the number of ids, however many events arrive (memory O(se
 class alignas(64) ExpiryHeap  // a cache line each: the heaps of neighbouring row bands change on two threads
 {
 public:
-    void reset(int ids)
+    // Empty, for ids 0..ids-1, with room for `capacity` entries before the heap grows.
+    void reset(int ids, size_t capacity)
     {
         heap_.clear();
-        heap_.reserve((size_t)ids);
+        heap_.reserve(capacity);
         slot_.assign((size_t)ids, -1);
     }
 

@@ -90,8 +90,12 @@ void ZouDescriptorMap::resetExpiries()
 {
     assignRowBands();
     expiry_.resize(bandFirstRow_.size());
-    for (ExpiryHeap& heap : expiry_)
-        heap.reset((int)active_.size());
+    // Room for every pixel and polarity of the band's rows: a band's heap never grows while its rows stay.
+    for (size_t b = 0; b < expiry_.size(); b++)
+    {
+        const int end = b + 1 < bandFirstRow_.size() ? bandFirstRow_[b + 1] : size_.height;
+        expiry_[b].reset((int)active_.size(), (size_t)(end - bandFirstRow_[b]) * (size_t)size_.width * 2);
+    }
 }
 
 void ZouDescriptorMap::setRowBands(const std::vector<int>& firstRows)

@@ -143,8 +143,8 @@ own disparity does not count among the neighbours' estimates. On weak edges, whe
 each crossing, the fit calls many of the edge's own events noise, and left out of the descriptors they take
 the edge's structure with them. The paper leaves them out: setNoiseActiveTime(0).
 
-Memory is O(sensor pixels): the per-pixel maps, an expiry heap over pixels (one per row band with
-setNumThreads()) and the two LifetimeEstimators.
+Memory is O(sensor pixels): the per-pixel maps, an expiry heap over pixels (with setNumThreads(), up to
+three per row band: its rows next to each neighbour apart) and the two LifetimeEstimators.
 */
 class CV_EXPORTS_W StereoEventMatcher : public Algorithm
 {
@@ -285,11 +285,13 @@ public:
     CV_WRAP virtual void setActiveDistance(double px) = 0;
     /** @brief Threads for process() in the per-event modes (default 1; 1..64): the sensor's rows are split
     into this many bands, each processed on its own thread, split where the packet's events divide evenly.
-    An event close enough to a neighbouring band to touch rows that band's events touch waits until that
-    band has processed everything before it, so the results are identical to one thread's, bit for bit.
-    Bands are at least 2 x (the rows an event reaches each way: half the aggregation window at the
-    defaults) + 1 rows tall, which caps the threads on small sensors (5 on a DAVIS240 at the defaults);
-    packets of fewer than 1000 events run on one thread. More threads than the machine's cores is slower: a band
+    An event (or the end of an event's activity) close enough to a neighbouring band to touch data that
+    band's events touch waits until that band has processed its earlier events in the rows it could touch
+    and its earlier ends of activity near the boundary, so the results are identical to one thread's, bit
+    for bit. Two events can touch the same data when they
+    are at most 19 rows apart at the defaults (half the aggregation window read, plus the rows an activation
+    writes); bands are taller than that, which caps the threads on small sensors (9 on a DAVIS240 at the
+    defaults); packets of fewer than 1000 events run on one thread. More threads than the machine's cores is slower: a band
     whose thread is not running holds its neighbours back. processEvent() always runs on the calling thread.
     Not stored by write(). */
     CV_WRAP virtual int getNumThreads() const = 0;
