@@ -49,10 +49,9 @@ skipped+=':StereoEventMatcher.coupled_leads_frame_sgbm_by_ten_points_on_the_near
 # The row bands against one thread: two of the six scene x mode cases (two_planes COUPLED, cluttered
 # FIXED_INTERVAL; 25-35 s each here). The bands' code is the same in every mode; the modes' own code runs
 # under the sanitizers in the single-thread tests, and cluttered COUPLED under TSan below.
-skipped+=':StereoEventMatcher_RowBands.give_the_results_of_one_thread_bit_for_bit/1'
-skipped+=':StereoEventMatcher_RowBands.give_the_results_of_one_thread_bit_for_bit/2'
-skipped+=':StereoEventMatcher_RowBands.give_the_results_of_one_thread_bit_for_bit/3'
-skipped+=':StereoEventMatcher_RowBands.give_the_results_of_one_thread_bit_for_bit/4'
+for case in 1 2 3 4; do
+  skipped+=":StereoEventMatcher_RowBands.give_the_results_of_one_thread_bit_for_bit/$case"
+done
 "$build/modules/event/opencv_test_event" --gtest_filter="-$skipped"
 echo "== sanitizers: samples on the simulator and on every real recording"
 work=$(mktemp -d)
