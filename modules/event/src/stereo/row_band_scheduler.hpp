@@ -95,7 +95,8 @@ private:
 
     void runBand(int band, int conflictRows, const std::vector<int>& rows, const std::vector<int64>& times,
                  int valid, const Operations& ops);
-    // Key of segment s's earliest expiry (with its row and token), `none` when none is due in the packet.
+    // Key of the segment's earliest expiry (with its row and token); the largest int64 when none is due in the
+    // packet.
     int64 expiryKey(int segment, int band, const std::vector<int64>& times, int valid, const Operations& ops,
                     int& row, int& token) const;
     // The next expiry key over the segments of band b's zone z (0 top, 1 bottom).
