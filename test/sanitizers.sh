@@ -33,9 +33,10 @@ export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1:strict_string_checks=1
 export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
 export LSAN_OPTIONS=suppressions="$here/lsan.supp"
 # Every unit test except the accuracy figures on long simulated runs (4-15 s each in Release, 6-11 times that
-# here: the row alignment test took 35 s, the temporal prior's 69 s, the lifetime copies on changing speeds 50 s). They run in the normal unit test job;
-# under the sanitizers their code paths are taken by the shorter tests (the row bands' scenes, process()
-# against processEvent(), the look-ahead and border closed forms) and by the realistic scene below.
+# here: the row alignment test took 35 s, the temporal prior's 69 s, the lifetime copies on changing speeds
+# 50 s). They run in the normal unit test job; under the sanitizers their code paths are taken by the shorter
+# tests (the row bands' scenes, process() against processEvent(), the look-ahead and border closed forms) and by
+# the realistic scene below.
 skipped='StereoEventMatcher.coupled_beats_frame_sgbm_on_textured_scenes'
 skipped+=':StereoEventMatcher.lifetime_modes_estimate_as_many_events_as_fixed_interval_from_the_start'
 skipped+=':StereoEventMatcher.textured_scenes_meet_the_accuracy_and_density_targets'

@@ -113,8 +113,7 @@ std::exception_ptr RowBandScheduler::run(const std::vector<int>& firstRows, int 
         firstInRow[(size_t)y] = i;
     }
     for (int y = 0; y < height; y++)
-        rowNext_[(size_t)y].store(firstInRow[(size_t)y] >= 0 ? (int64)firstInRow[(size_t)y] * stride_ + bands : NONE_LEFT,
-                                  std::memory_order_relaxed);
+        rowNext_[(size_t)y].store(eventKey(firstInRow[(size_t)y]), std::memory_order_relaxed);
     for (int b = 0; b < bands; b++)
         for (int z = 0; z < 2; z++)
             zoneNext_[(size_t)b * 2 + z].key.store(zoneExpiryKey(b, z, times, valid, ops), std::memory_order_relaxed);
@@ -172,34 +171,35 @@ int64 RowBandScheduler::zoneExpiryKey(int b, int z, const std::vector<int64>& ti
 void RowBandScheduler::runBand(int b, int conflictRows, const std::vector<int>& rows, const std::vector<int64>& times,
                                int valid, const Operations& ops)
 {
-    const int bands = (int)bands_.size();
     const Band& me = bands_[(size_t)b];
     const int segmentCount = (int)me.segments.size();
     SegmentCache cache;
     for (int k = 0; k < segmentCount; k++)
         cache.fresh[k] = false;
+    // Local segment k's earliest expiry key, looked up again only after an operation in the segment.
+    auto segmentKey = [&](int k) {
+        if (!cache.fresh[k])
+        {
+            cache.key[k] = expiryKey(me.segments[(size_t)k], b, times, valid, ops, cache.row[k], cache.token[k]);
+            cache.fresh[k] = true;
+        }
+        return cache.key[k];
+    };
     int i = 0;
     for (;;)
     {
         while (i < valid && !(rows[(size_t)i] >= me.top && rows[(size_t)i] < me.bottom))
             i++;
-        const int64 eventKey = i < valid ? (int64)i * stride_ + bands : NONE_LEFT;
+        const int64 nextEventKey = eventKey(i < valid ? i : -1);
         int earliest = -1;
         for (int k = 0; k < segmentCount; k++)
-        {
-            if (!cache.fresh[k])
-            {
-                cache.key[k] = expiryKey(me.segments[(size_t)k], b, times, valid, ops, cache.row[k], cache.token[k]);
-                cache.fresh[k] = true;
-            }
-            if (cache.key[k] != NONE_LEFT && (earliest < 0 || cache.key[k] < cache.key[earliest]))
+            if (segmentKey(k) != NONE_LEFT && (earliest < 0 || cache.key[k] < cache.key[earliest]))
                 earliest = k;
-        }
         const int64 expiryKeyNow = earliest >= 0 ? cache.key[earliest] : NONE_LEFT;
-        const int64 key = std::min(eventKey, expiryKeyNow);
+        const int64 key = std::min(nextEventKey, expiryKeyNow);
         if (key == NONE_LEFT)
             break;
-        const bool isExpiry = expiryKeyNow < eventKey;
+        const bool isExpiry = expiryKeyNow < nextEventKey;
         const int y = isExpiry ? cache.row[earliest] : rows[(size_t)i];
         // An expiry outside its band would break the waits (and hang them): the caller's heaps must follow
         // splitSegments.
@@ -230,25 +230,13 @@ void RowBandScheduler::runBand(int b, int conflictRows, const std::vector<int>& 
                 int64 next = NONE_LEFT;
                 for (int k = 0; k < segmentCount; k++)
                     if (me.segmentInZone[z][(size_t)k])
-                    {
-                        if (!cache.fresh[k])
-                        {
-                            cache.key[k] = expiryKey(me.segments[(size_t)k], b, times, valid, ops, cache.row[k],
-                                                     cache.token[k]);
-                            cache.fresh[k] = true;
-                        }
-                        next = std::min(next, cache.key[k]);
-                    }
+                        next = std::min(next, segmentKey(k));
                 zoneNext_[(size_t)b * 2 + z].key.store(next, std::memory_order_release);
             }
         if (!isExpiry)
         {
             if (inZone[0] || inZone[1])
-            {
-                const int following = nextInRow_[(size_t)i];
-                rowNext_[(size_t)y].store(following >= 0 ? (int64)following * stride_ + bands : NONE_LEFT,
-                                          std::memory_order_release);
-            }
+                rowNext_[(size_t)y].store(eventKey(nextInRow_[(size_t)i]), std::memory_order_release);
             i++;
         }
     }

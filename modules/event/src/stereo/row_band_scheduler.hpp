@@ -10,6 +10,7 @@
 #include <atomic>
 #include <exception>
 #include <functional>
+#include <limits>
 #include <memory>
 #include <vector>
 
@@ -93,6 +94,12 @@ private:
         std::vector<uchar> segmentInZone[2];  // each holds rows of its top [0] / bottom [1] zone
     };
 
+    // Key of event `event` (event x (bands + 1) + bands: after the expiries at its position); the largest int64
+    // for -1 (none).
+    int64 eventKey(int event) const
+    {
+        return event >= 0 ? (int64)event * stride_ + (stride_ - 1) : std::numeric_limits<int64>::max();
+    }
     void runBand(int band, int conflictRows, const std::vector<int>& rows, const std::vector<int64>& times,
                  int valid, const Operations& ops);
     // Key of the segment's earliest expiry (with its row and token); the largest int64 when none is due in the

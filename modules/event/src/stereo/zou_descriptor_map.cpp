@@ -90,12 +90,15 @@ void ZouDescriptorMap::resetExpiries()
 {
     assignRowBands();
     expiry_.resize(bandFirstRow_.size());
-    // Room for every pixel and polarity of the band's rows: a band's heap never grows while its rows stay.
     for (size_t b = 0; b < expiry_.size(); b++)
-    {
-        const int end = b + 1 < bandFirstRow_.size() ? bandFirstRow_[b + 1] : size_.height;
-        expiry_[b].reset((int)active_.size(), (size_t)(end - bandFirstRow_[b]) * (size_t)size_.width * 2);
-    }
+        resetHeap(b);
+}
+
+void ZouDescriptorMap::resetHeap(size_t b)
+{
+    // Room for every pixel and polarity of the band's rows: a band's heap never grows while its rows stay.
+    const int end = b + 1 < bandFirstRow_.size() ? bandFirstRow_[b + 1] : size_.height;
+    expiry_[b].reset((int)active_.size(), (size_t)(end - bandFirstRow_[b]) * (size_t)size_.width * 2);
 }
 
 void ZouDescriptorMap::setRowBands(const std::vector<int>& firstRows)
@@ -105,27 +108,25 @@ void ZouDescriptorMap::setRowBands(const std::vector<int>& firstRows)
         CV_Assert(firstRows[b] > firstRows[b - 1]);
     if (firstRows == bandFirstRow_)
         return;
-    // Move the pending expiries whose band changed to the heaps of their new bands. With as many bands as
-    // before the heaps stay (the row bands move a little with every packet; a heap's reset writes a slot for
-    // every pixel).
-    std::vector<std::pair<int, int64>> moving;
-    const bool sameCount = firstRows.size() == bandFirstRow_.size();
+    // Move the pending expiries whose band changed to the heaps of their new bands; the heaps stay (the row
+    // bands move a little with every packet, and a heap's reset writes a slot for every pixel).
     bandFirstRow_ = firstRows;
-    if (sameCount)
-        assignRowBands();
+    assignRowBands();
+    std::vector<std::pair<int, int64>> moving;
     for (size_t b = 0; b < expiry_.size(); b++)
     {
         ExpiryHeap& heap = expiry_[b];
         const size_t first = moving.size();
         for (size_t i = 0; i < heap.size(); i++)
-            if (!sameCount || (size_t)bandOfRow(rowOf(heap.idAt(i))) != b)
+            if ((size_t)bandOfRow(rowOf(heap.idAt(i))) != b)
                 moving.emplace_back(heap.idAt(i), heap.timeAt(i));
-        if (sameCount)
-            for (size_t i = first; i < moving.size(); i++)
-                heap.remove(moving[i].first);
+        for (size_t i = first; i < moving.size(); i++)
+            heap.remove(moving[i].first);
     }
-    if (!sameCount)
-        resetExpiries();
+    const size_t before = expiry_.size();
+    expiry_.resize(bandFirstRow_.size());
+    for (size_t b = before; b < expiry_.size(); b++)
+        resetHeap(b);
     for (const std::pair<int, int64>& e : moving)
         heapOfRow(rowOf(e.first)).set(e.first, e.second);
 }

@@ -92,6 +92,8 @@ private:
     void deactivateId(int id);
     // Empty expiry heaps, one per band of bandFirstRow_.
     void resetExpiries();
+    // Empties band b's heap.
+    void resetHeap(size_t b);
     // The nearest active event of pixel id from offset `from` on (NONE: none).
     int scanNearest(int id, int from) const;
     // The bins of polarity p in the descriptors that a pixel's vector votes into: the N x N window around the
