@@ -11,6 +11,7 @@
 #include "common/timestamp_math.hpp"
 #include "stereo/rectification_table.hpp"
 #include "stereo/stereo_event_matcher_impl.hpp"
+#include "stereo/window_median.hpp"
 
 #include "opencv2/imgproc.hpp"
 
@@ -575,6 +576,8 @@ double StereoEventMatcherImpl::getLifetimeSeconds() const
 void StereoEventMatcherImpl::sizeScratch(MatchScratch& s) const
 {
     s.matchedRows.resize((size_t)lifetimeWindow_);
+    s.matchedValues.resize((size_t)lifetimeWindow_ * lifetimeWindow_ + WINDOW_MEDIAN_PAD);
+    s.matchedPositions.resize((size_t)lifetimeWindow_ * lifetimeWindow_);
     s.matchedKeys.resize((size_t)lifetimeWindow_ * lifetimeWindow_);
     const size_t range = (size_t)(maxDisparity_ - minDisparity_ + 1);
     s.candidates.resize(range);

@@ -50,7 +50,8 @@ struct alignas(64) MatchScratch
     std::vector<unsigned> columnMass;
     std::vector<unsigned> unseenMass;
     std::vector<unsigned> matchedRows;
-    std::vector<uint64> matchedKeys;
+    std::vector<int> matchedValues, matchedPositions;  // the window's active lifetimes (their bits) and indices
+    std::vector<uint64> matchedKeys;                    // a large window's selection (windowMedianPosition)
     std::vector<float> disparities;
     LifetimeScratch lifetimes[2];
     std::vector<std::pair<int, StereoEventEstimate>> decided;  // a row band's estimates, stored after the run
@@ -258,12 +259,13 @@ private:
     const unsigned* scoreSeenColumns(const ZouDescriptorMap& self, int sign, Point r, int h, int& columnsAt,
                                      MatchScratch& s) const;
 
-    // The temporal prior's decision for an event without a unique winner at the largest window (best cost
-    // bestCost, the candidates' scores in score): false when it has none; otherwise the chosen candidate in m.
+    // The temporal prior's decision for an event (polarity p) without a unique winner at the largest window
+    // (best cost bestCost, the candidates' scores in score): false when it has none; otherwise the chosen
+    // candidate in m.
     // Its neighbourhood: PRIOR_RADIUS rows above and below, and PRIOR_RADIUS columns to each side, or
     // PRIOR_ROW_REACH on a horizontal edge (priorColumnReach).
     enum { PRIOR_RADIUS = 5, PRIOR_ROW_REACH = 30, PRIOR_SUPPORT = 3 };
-    bool decideByPrior(int c, Point r, int64 t, const unsigned* score, unsigned bestCost, MatchScratch& s,
+    bool decideByPrior(int c, Point r, int p, int64 t, const unsigned* score, unsigned bestCost, MatchScratch& s,
                        MatchResult& m) const;
     // How far along the row the temporal prior looks for the event at r of sensor c.
     int priorColumnReach(int c, Point r) const;
@@ -286,6 +288,9 @@ private:
     // around (x, y) of sensor c. False when none has a lifetime.
     // `copies`: how many times that lifetime was copied between the sensors since a plane fit gave it.
     bool matchedLifetime(int c, int x, int y, int p, MatchScratch& s, float& lifetime, Vec2f& flow, int& copies) const;
+    // COUPLED: starts loading what matchedLifetime(c, x, y, p) will read, so that the left-right check overlaps
+    // its cache misses (the other sensor's lifetimes are seldom cached).
+    void prefetchMatchedWindow(int c, int x, int y, int p) const;
 
     Size size_;
     int mode_ = STEREO_COUPLED;

@@ -7,6 +7,7 @@
 
 #include "precomp.hpp"
 #include "stereo/stereo_event_matcher_impl.hpp"
+#include "stereo/window_median.hpp"
 
 #include <opencv2/core/hal/intrin.hpp>
 
@@ -237,7 +238,7 @@ MatchResult StereoEventMatcherImpl::match(int c, Point r, int p, int64 t, MatchS
         const uint64 alternative = std::min(second, nothing);
         const bool unique = clearlyBelow(bestCost, alternative);
         // Not unique at the largest window: the temporal prior may decide between the near-equals.
-        if (!unique && last && priorTolerance_ > 0 && decideByPrior(c, r, t, score, bestCost, s, m))
+        if (!unique && last && priorTolerance_ > 0 && decideByPrior(c, r, p, t, score, bestCost, s, m))
             return m;
         // The aggregation stops when the winner beats every alternative by the uniqueness margin, or at the
         // largest window.
@@ -252,6 +253,7 @@ MatchResult StereoEventMatcherImpl::match(int c, Point r, int p, int64 t, MatchS
                 d += subPixelOffset(score[best - 1], bestCost, score[best + 1]);
             m.counterpartX = xo;
             m.disparity = (float)d;
+            prefetchMatchedWindow(1 - c, xo, r.y, p);
             if (!consistent(1 - c, m.counterpartX, r.y, d, t, s))
                 m.confidence = 0.f;
             return m;
@@ -270,7 +272,7 @@ MatchResult StereoEventMatcherImpl::match(int c, Point r, int p, int64 t, MatchS
 // its cost is within priorTolerance_ % of the best's, with the share of those estimates that agree with the
 // median within a pixel as its confidence. Edges move across the sensor a pixel at a time: what their events
 // were matched to a moment ago, nearby, is most often what the next one should be matched to.
-bool StereoEventMatcherImpl::decideByPrior(int c, Point r, int64 t, const unsigned* score, unsigned bestCost, MatchScratch& s,
+bool StereoEventMatcherImpl::decideByPrior(int c, Point r, int p, int64 t, const unsigned* score, unsigned bestCost, MatchScratch& s,
                                            MatchResult& m) const
 {
     float prior;
@@ -288,6 +290,7 @@ bool StereoEventMatcherImpl::decideByPrior(int c, Point r, int64 t, const unsign
     m.disparity = (float)d;
     m.counterpartX = r.x + (c == CAMERA_LEFT ? -d : d);
     m.confidence = agreeingShare(s.disparities, prior);  // before consistent() below refills s.disparities
+    prefetchMatchedWindow(1 - c, m.counterpartX, r.y, p);
     if (!consistent(1 - c, m.counterpartX, r.y, d, t, s))
         m.confidence = 0.f;
     return true;
@@ -370,12 +373,21 @@ size_t StereoEventMatcherImpl::activeEstimateMedian(int c, Point centre, int rad
     return disparities.size();
 }
 
+// COUPLED: starts loading what matchedLifetime() will read.
+void StereoEventMatcherImpl::prefetchMatchedWindow(int c, int x, int y, int p) const
+{
+    if (mode_ != STEREO_COUPLED)
+        return;
+    const int h = lifetimeWindow_ / 2;
+    maps_[c].prefetchLifetimes(std::max(0, x - h), std::min(size_.width - 1, x + h), std::max(0, y - h),
+                               std::min(size_.height - 1, y + h), p);
+}
+
 // Median lifetime (and the flow of that event) of the active events of polarity p in the lifetime window
 // around (x, y) of sensor c. False when none has a lifetime.
 // Matched events copy their lifetime, so most windows hold equal lifetimes: the median is taken in the order
-// (lifetime, position in the map), which fixes whose flow is returned whatever the selection algorithm.
-// Each active event is one 64-bit key (a positive float's bits order as the float does), so that the
-// selection compares integers.
+// (lifetime, position in the map), which fixes whose flow is returned whatever the selection algorithm
+// (windowMedianPosition: the events are gathered in map order).
 bool StereoEventMatcherImpl::matchedLifetime(int c, int x, int y, int p, MatchScratch& s, float& lifetime, Vec2f& flow,
                                              int& copies) const
 {
@@ -401,7 +413,8 @@ bool StereoEventMatcherImpl::matchedLifetime(int c, int x, int y, int p, MatchSc
             active |= (unsigned)(row[i] > 0) << i;
         rowActive[yy - y0] = active;
     }
-    uint64* const keys = s.matchedKeys.data();
+    int* const values = s.matchedValues.data();
+    int* const positions = s.matchedPositions.data();
     int n = 0;
     for (int yy = y0; yy <= y1; yy++)
     {
@@ -409,19 +422,17 @@ bool StereoEventMatcherImpl::matchedLifetime(int c, int x, int y, int p, MatchSc
         for (unsigned active = rowActive[yy - y0]; active != 0; active &= active - 1)
         {
             const int i = first + (int)trailingZeros32(active);
-            uint32_t bits;
-            std::memcpy(&bits, &lifetimes[i], sizeof(bits));
-            keys[n++] = ((uint64)bits << 32) | (uint32_t)i;
+            std::memcpy(&values[n], &lifetimes[i], sizeof(int));
+            positions[n++] = i;
         }
     }
     if (n == 0)
         return false;
-    std::nth_element(keys, keys + n / 2, keys + n);
-    const uint64 median = keys[n / 2];
-    const uint32_t bits = (uint32_t)(median >> 32);
-    std::memcpy(&lifetime, &bits, sizeof(lifetime));
-    flow = map.flowAt((int)(uint32_t)median);
-    copies = map.copiesAt((int)(uint32_t)median);
+    std::fill_n(values + n, (int)WINDOW_MEDIAN_PAD, WINDOW_MEDIAN_PAD_VALUE);
+    const int median = windowMedianPosition(values, n, s.matchedKeys.data());
+    std::memcpy(&lifetime, &values[median], sizeof(lifetime));
+    flow = map.flowAt(positions[median]);
+    copies = map.copiesAt(positions[median]);
     return true;
 }
 

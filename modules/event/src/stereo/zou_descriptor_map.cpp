@@ -4,6 +4,7 @@
 
 #include "precomp.hpp"
 #include "stereo/zou_descriptor_map.hpp"
+#include "common/prefetch.hpp"
 
 namespace cv {
 namespace event {
@@ -237,6 +238,17 @@ void ZouDescriptorMap::activate(int x, int y, int p, int64 expiry, float lifetim
             continue;
         revote(windowSeeing(x, y, p, k, interior, eventBins), cur, k);
         cur = (uchar)k;
+    }
+}
+
+void ZouDescriptorMap::prefetchLifetimes(int x0, int x1, int y0, int y1, int p) const
+{
+    for (int y = y0; y <= y1; y++)
+    {
+        const size_t first = (size_t)id(x0, y, p), last = (size_t)id(x1, y, p);
+        prefetchRange(&lifetime_[first], &lifetime_[last] + 1);
+        prefetchRange(&flow_[first], &flow_[last] + 1);
+        prefetchRange(&copies_[first], &copies_[last] + 1);
     }
 }
 

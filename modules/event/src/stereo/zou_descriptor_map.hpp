@@ -66,6 +66,10 @@ public:
     // How many times the lifetime at lifetimeIndex(x, y, p) was copied from the other sensor since a plane fit
     // gave it (0: fitted or predicted here).
     int copiesAt(int index) const { return copies_[(size_t)index]; }
+    // Starts loading the lifetimes, flows and copy counts of polarity p in the rectangle [x0, x1] x [y0, y1]
+    // (inside the image) into the cache, so that a later read of them (a matched window's median) does not wait
+    // for memory.
+    void prefetchLifetimes(int x0, int x1, int y0, int y1, int p) const;
 
     // Makes the event at (x, y, p) the pixel's active one until expiry (exclusive) [us].
     void activate(int x, int y, int p, int64 expiry, float lifetime, const Vec2f& flow, int copies = 0);
