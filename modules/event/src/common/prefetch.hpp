@@ -13,24 +13,27 @@ namespace cv {
 namespace event {
 namespace detail {
 
+/** Asks for the cache line holding `address` without waiting for it. Only a hint; a no-op where the compiler
+has none. */
+inline void prefetchLine(const char* address)
+{
+#if defined(__GNUC__)
+    __builtin_prefetch(address);
+#elif defined(_MSC_VER) && (defined(_M_X64) || defined(_M_IX86))
+    _mm_prefetch(address, _MM_HINT_T0);
+#else
+    (void)address;
+#endif
+}
+
 /** Asks for the cache lines of the bytes [first, end) without waiting for them: a later read of them finds
-them loaded when enough work lies in between. Only a hint; a no-op where the compiler has none. */
+them loaded when enough work lies in between. */
 inline void prefetchRange(const void* first, const void* end)
 {
     const char* const last = (const char*)end - 1;
     for (const char* b = (const char*)first; b < last; b += 64)
-    {
-#if defined(__GNUC__)
-        __builtin_prefetch(b);
-#elif defined(_MSC_VER) && (defined(_M_X64) || defined(_M_IX86))
-        _mm_prefetch(b, _MM_HINT_T0);
-#endif
-    }
-#if defined(__GNUC__)
-    __builtin_prefetch(last);  // the line of the last byte, when the step above passed over it
-#elif defined(_MSC_VER) && (defined(_M_X64) || defined(_M_IX86))
-    _mm_prefetch(last, _MM_HINT_T0);
-#endif
+        prefetchLine(b);
+    prefetchLine(last);  // the line of the last byte, when the step above passed over it
 }
 
 }  // namespace detail

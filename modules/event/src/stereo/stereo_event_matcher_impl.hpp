@@ -291,6 +291,8 @@ private:
     // COUPLED: starts loading what matchedLifetime(c, x, y, p) will read, so that the left-right check overlaps
     // its cache misses (the other sensor's lifetimes are seldom cached).
     void prefetchMatchedWindow(int c, int x, int y, int p) const;
+    // The lifetimeWindow around (x, y), clipped to the image: the window matchedLifetime reads.
+    Rect lifetimeWindowAround(int x, int y) const;
 
     Size size_;
     int mode_ = STEREO_COUPLED;

@@ -373,14 +373,18 @@ size_t StereoEventMatcherImpl::activeEstimateMedian(int c, Point centre, int rad
     return disparities.size();
 }
 
-// COUPLED: starts loading what matchedLifetime() will read.
+Rect StereoEventMatcherImpl::lifetimeWindowAround(int x, int y) const
+{
+    const int h = lifetimeWindow_ / 2;
+    return Rect(Point(x - h, y - h), Point(x + h + 1, y + h + 1)) & Rect(Point(), size_);
+}
+
 void StereoEventMatcherImpl::prefetchMatchedWindow(int c, int x, int y, int p) const
 {
     if (mode_ != STEREO_COUPLED)
         return;
-    const int h = lifetimeWindow_ / 2;
-    maps_[c].prefetchLifetimes(std::max(0, x - h), std::min(size_.width - 1, x + h), std::max(0, y - h),
-                               std::min(size_.height - 1, y + h), p);
+    const Rect w = lifetimeWindowAround(x, y);
+    maps_[c].prefetchLifetimes(w.x, w.x + w.width - 1, w.y, w.y + w.height - 1, p);
 }
 
 // Median lifetime (and the flow of that event) of the active events of polarity p in the lifetime window
@@ -392,10 +396,9 @@ bool StereoEventMatcherImpl::matchedLifetime(int c, int x, int y, int p, MatchSc
                                              int& copies) const
 {
     const ZouDescriptorMap& map = maps_[c];
-    const int h = lifetimeWindow_ / 2;
-    const int x0 = std::max(0, x - h), x1 = std::min(size_.width - 1, x + h);
-    const int y0 = std::max(0, y - h), y1 = std::min(size_.height - 1, y + h);
-    const int width = x1 - x0 + 1;  // <= 31: a row's activity fits one 32-bit mask
+    const Rect w = lifetimeWindowAround(x, y);
+    const int x0 = w.x, y0 = w.y, y1 = w.y + w.height - 1;
+    const int width = w.width;  // <= 31: a row's activity fits one 32-bit mask
     const float* const lifetimes = map.lifetimes();
     // First the window's activity, row by row, with no branch: the rows' loads are independent, so that their
     // cache misses (the other sensor's lifetimes are seldom cached) overlap instead of queuing behind the

@@ -23,7 +23,7 @@ int windowMedianPosition(const int* values, int n, uint64* keys)
         return (int)(uint32_t)keys[want];
     }
     static_assert((int)v_int32x4::nlanes == (int)WINDOW_MEDIAN_PAD, "the padding is one vector");
-    const int padded = (n + v_int32x4::nlanes - 1) / v_int32x4::nlanes * v_int32x4::nlanes;
+    const int padded = alignSize(n, v_int32x4::nlanes);
     for (int i = 0; i < n; i++)
     {
         if (i > 0 && values[i] == values[i - 1])
