@@ -6,6 +6,7 @@
 // descriptor_cost.simd.hpp, compiled once per instruction set.
 
 #include "precomp.hpp"
+#include "common/scalar_kernels_forced.hpp"
 #include "stereo/descriptor_cost.hpp"
 #include "stereo/zou_descriptor_map.hpp"
 
@@ -55,17 +56,10 @@ static DescriptorCostKernels dispatchedKernels()
     CV_CPU_DISPATCH(descriptorCostKernels, (), CV_CPU_DISPATCH_MODES_ALL);
 }
 
-// OPENCV_EVENT_SCALAR_KERNELS set to anything but empty or 0.
-static bool scalarForced()
-{
-    const char* v = std::getenv("OPENCV_EVENT_SCALAR_KERNELS");
-    return v && *v && std::strcmp(v, "0") != 0;
-}
-
 // Chosen on first use (not during static initialisation, when OpenCV's CPU detection may not have run yet).
 const DescriptorCostKernels& descriptorCostKernelsForThisCpu()
 {
-    static const DescriptorCostKernels k = scalarForced() ? scalarDescriptorCostKernels() : dispatchedKernels();
+    static const DescriptorCostKernels k = scalarKernelsForced() ? scalarDescriptorCostKernels() : dispatchedKernels();
     return k;
 }
 

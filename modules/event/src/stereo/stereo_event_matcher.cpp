@@ -11,7 +11,6 @@
 #include "common/timestamp_math.hpp"
 #include "stereo/rectification_table.hpp"
 #include "stereo/stereo_event_matcher_impl.hpp"
-#include "stereo/window_median.hpp"
 
 #include "opencv2/imgproc.hpp"
 
@@ -313,6 +312,11 @@ void StereoEventMatcherImpl::remember(int c, Point r, int64 t, int64 activeFor, 
     lastEventTime_[c][i] = t;
     q.until = timeAfter(t, activeFor);
     q.disparity = disparity;
+    if (disparity >= 0)
+    {
+        int64& block = estimateBlockUntil_[c][(size_t)r.y * estimateBlocksPerRow_ + r.x / ESTIMATE_BLOCK];
+        block = std::max(block, q.until);
+    }
 }
 
 void StereoEventMatcherImpl::processFrames(const Mat_<Event>& ev, const StoreFn& store)
@@ -551,6 +555,8 @@ void StereoEventMatcherImpl::reset()
         maps_[c].configure(size_, descriptorWindow_, maxVectorLength_, margin);
         estimators_[c]->reset();
         lastEstimate_[c].assign((size_t)size_.area(), PixelEstimate());
+        estimateBlocksPerRow_ = divUp(size_.width, (int)ESTIMATE_BLOCK);
+        estimateBlockUntil_[c].assign((size_t)size_.height * estimateBlocksPerRow_, 0);
         lastEventTime_[c].assign((size_t)size_.area(), 0);
         pendingEvents_[c].assign((size_t)size_.area() * 2, 0);
     }
@@ -575,9 +581,8 @@ double StereoEventMatcherImpl::getLifetimeSeconds() const
 
 void StereoEventMatcherImpl::sizeScratch(MatchScratch& s) const
 {
-    s.matchedRows.resize((size_t)lifetimeWindow_);
     s.matchedValues.resize((size_t)lifetimeWindow_ * lifetimeWindow_ + WINDOW_MEDIAN_PAD);
-    s.matchedPositions.resize((size_t)lifetimeWindow_ * lifetimeWindow_);
+    s.matchedPositions.resize((size_t)lifetimeWindow_ * lifetimeWindow_ + WINDOW_MEDIAN_PAD);
     s.matchedKeys.resize((size_t)lifetimeWindow_ * lifetimeWindow_);
     const size_t range = (size_t)(maxDisparity_ - minDisparity_ + 1);
     s.candidates.resize(range);

@@ -10,6 +10,7 @@
 #include "stereo/descriptor_cost.hpp"
 #include "stereo/frame_sgbm_matcher.hpp"
 #include "stereo/row_band_scheduler.hpp"
+#include "stereo/window_median.hpp"
 #include "stereo/zou_descriptor_map.hpp"
 
 #include <functional>
@@ -34,7 +35,7 @@ struct MatchResult
 /** The working memory of matching one event (one per thread): the candidates as disparity index (disparity -
 min) in increasing order, the byte offset of each one's descriptor in the other sensor from the event's
 column, and their costs (the first `count` of each, sized for the whole disparity range); the matched
-window's activity per row and its active events (matchedLifetime); the left-right check's disparities; the lifetime
+window's active events (matchedLifetime); the left-right check's disparities; the lifetime
 estimators' scratch, per camera.
 Near the other image's border (scoreSeenColumns): the candidates' scores, the event's own mass per column of
 the window and the mass of its first k unseen columns. Aligned to cache lines: each row band's thread writes
@@ -49,9 +50,8 @@ struct alignas(64) MatchScratch
     std::vector<unsigned> seenScore;
     std::vector<unsigned> columnMass;
     std::vector<unsigned> unseenMass;
-    std::vector<unsigned> matchedRows;
     std::vector<int> matchedValues, matchedPositions;  // the window's active lifetimes (their bits) and indices
-    std::vector<uint64> matchedKeys;                    // a large window's selection (windowMedianPosition)
+    std::vector<uint64> matchedKeys;                    // a large window's selection (WindowMedianKernels)
     std::vector<float> disparities;
     LifetimeScratch lifetimes[2];
     std::vector<std::pair<int, StereoEventEstimate>> decided;  // a row band's estimates, stored after the run
@@ -312,11 +312,18 @@ private:
     ZouDescriptorMap maps_[2];
     FrameSgbmMatcher frames_;
     std::vector<PixelEstimate> lastEstimate_[2];
+    // Per ESTIMATE_BLOCK pixels of a row: at least the latest `until` of the block's estimates with a disparity
+    // (it only grows), so that a scan of the neighbours' estimates skips the blocks where none can be active.
+    enum { ESTIMATE_BLOCK = 16 };
+    std::vector<int64> estimateBlockUntil_[2];
+    int estimateBlocksPerRow_ = 0;
     std::vector<int64> lastEventTime_[2];
     int64 lastTime_ = std::numeric_limits<int64>::min();
     int64 coldStartEnd_ = 0;  // the end of the cold start: see admit()
     // The cost kernel for this CPU (candidates' costs and window masses), fetched once.
     DescriptorRectSadBatchFn rectSadBatch_ = descriptorRectSadBatchFunction();
+    // The matched window's gather and median for this CPU, fetched once.
+    const WindowMedianKernels& windowMedian_ = windowMedianKernelsForThisCpu();
     MatchScratch scratch_;  // processEvent's
     int numThreads_ = 1;
     bool timeLifetimes_ = false;

@@ -7,9 +7,7 @@
 
 #include "precomp.hpp"
 #include "stereo/stereo_event_matcher_impl.hpp"
-#include "stereo/window_median.hpp"
 
-#include <opencv2/core/hal/intrin.hpp>
 
 namespace cv {
 namespace event {
@@ -358,12 +356,20 @@ size_t StereoEventMatcherImpl::activeEstimateMedian(int c, Point centre, int rad
     std::vector<float>& disparities = s.disparities;
     disparities.clear();
     const int x0 = std::max(0, centre.x - columns), x1 = std::min(size_.width - 1, centre.x + columns);
+    const int block0 = x0 / ESTIMATE_BLOCK, block1 = x1 / ESTIMATE_BLOCK;
     for (int y = std::max(0, centre.y - radius); y <= std::min(size_.height - 1, centre.y + radius); y++)
     {
         const PixelEstimate* row = &last[(size_t)y * size_.width];
-        for (int x = x0; x <= x1; x++)
-            if (row[x].disparity >= 0 && t < row[x].until)
-                disparities.push_back(row[x].disparity);
+        const int64* blockUntil = &estimateBlockUntil_[c][(size_t)y * estimateBlocksPerRow_];
+        for (int b = block0; b <= block1; b++)
+        {
+            if (t >= blockUntil[b])
+                continue;
+            const int xe = std::min(x1, (b + 1) * (int)ESTIMATE_BLOCK - 1);
+            for (int x = std::max(x0, b * (int)ESTIMATE_BLOCK); x <= xe; x++)
+                if (row[x].disparity >= 0 && t < row[x].until)
+                    disparities.push_back(row[x].disparity);
+        }
     }
     if (disparities.empty())
         return 0;
@@ -391,48 +397,20 @@ void StereoEventMatcherImpl::prefetchMatchedWindow(int c, int x, int y, int p) c
 // around (x, y) of sensor c. False when none has a lifetime.
 // Matched events copy their lifetime, so most windows hold equal lifetimes: the median is taken in the order
 // (lifetime, position in the map), which fixes whose flow is returned whatever the selection algorithm
-// (windowMedianPosition: the events are gathered in map order).
+// (WindowMedianKernels: the events are gathered in map order).
 bool StereoEventMatcherImpl::matchedLifetime(int c, int x, int y, int p, MatchScratch& s, float& lifetime, Vec2f& flow,
                                              int& copies) const
 {
     const ZouDescriptorMap& map = maps_[c];
     const Rect w = lifetimeWindowAround(x, y);
-    const int x0 = w.x, y0 = w.y, y1 = w.y + w.height - 1;
-    const int width = w.width;  // <= 31: a row's activity fits one 32-bit mask
-    const float* const lifetimes = map.lifetimes();
-    // First the window's activity, row by row, with no branch: the rows' loads are independent, so that their
-    // cache misses (the other sensor's lifetimes are seldom cached) overlap instead of queuing behind the
-    // visits of the active pixels.
-    unsigned* const rowActive = s.matchedRows.data();  // sized for a whole window (sizeScratch())
-    const v_float32x4 zero = v_setzero_f32();
-    for (int yy = y0; yy <= y1; yy++)
-    {
-        const float* row = lifetimes + map.lifetimeIndex(x0, yy, p);
-        unsigned active = 0;
-        int i = 0;
-        for (; i + v_float32x4::nlanes <= width; i += v_float32x4::nlanes)
-            active |= (unsigned)v_signmask(v_load(row + i) > zero) << i;
-        for (; i < width; i++)
-            active |= (unsigned)(row[i] > 0) << i;
-        rowActive[yy - y0] = active;
-    }
     int* const values = s.matchedValues.data();
     int* const positions = s.matchedPositions.data();
-    int n = 0;
-    for (int yy = y0; yy <= y1; yy++)
-    {
-        const int first = map.lifetimeIndex(x0, yy, p);
-        for (unsigned active = rowActive[yy - y0]; active != 0; active &= active - 1)
-        {
-            const int i = first + (int)trailingZeros32(active);
-            std::memcpy(&values[n], &lifetimes[i], sizeof(int));
-            positions[n++] = i;
-        }
-    }
+    const int n = windowMedian_.gather(map.lifetimes(), map.lifetimeIndex(w.x, w.y, p), map.lifetimeRowStep(), w.width,
+                                       w.height, values, positions);
     if (n == 0)
         return false;
     std::fill_n(values + n, (int)WINDOW_MEDIAN_PAD, WINDOW_MEDIAN_PAD_VALUE);
-    const int median = windowMedianPosition(values, n, s.matchedKeys.data());
+    const int median = windowMedian_.medianPosition(values, n, s.matchedKeys.data());
     std::memcpy(&lifetime, &values[median], sizeof(lifetime));
     flow = map.flowAt(positions[median]);
     copies = map.copiesAt(positions[median]);

@@ -60,6 +60,8 @@ public:
     // are consecutive.
     const float* lifetimes() const { return lifetime_.data(); }
     int lifetimeIndex(int x, int y, int p) const { return id(x, y, p); }
+    // lifetimeIndex(x, y + 1, p) - lifetimeIndex(x, y, p).
+    int lifetimeRowStep() const { return paddedWidth_; }
     Vec2f flow(int x, int y, int p) const { return flow_[id(x, y, p)]; }
     // The flow at lifetimeIndex(x, y, p).
     Vec2f flowAt(int index) const { return flow_[(size_t)index]; }
