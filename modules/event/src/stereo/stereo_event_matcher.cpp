@@ -308,15 +308,17 @@ Point StereoEventMatcherImpl::admit(const Event& e)
 void StereoEventMatcherImpl::remember(int c, Point r, int64 t, int64 activeFor, float disparity)
 {
     const size_t i = (size_t)r.y * size_.width + r.x;
-    PixelEstimate& q = lastEstimate_[c][i];
     lastEventTime_[c][i] = t;
-    q.until = timeAfter(t, activeFor);
-    q.disparity = disparity;
-    if (disparity >= 0)
+    estimateDisparity_[c][i] = disparity;
+    if (disparity < 0)
     {
-        int64& block = estimateBlockUntil_[c][(size_t)r.y * estimateBlocksPerRow_ + r.x / ESTIMATE_BLOCK];
-        block = std::max(block, q.until);
+        estimateUntil_[c][i] = NO_ESTIMATE;
+        return;
     }
+    const int64 until = timeAfter(t, activeFor);
+    estimateUntil_[c][i] = until;
+    int64& block = estimateBlockUntil_[c][(size_t)r.y * estimateBlocksPerRow_ + r.x / ESTIMATE_BLOCK];
+    block = std::max(block, until);
 }
 
 void StereoEventMatcherImpl::processFrames(const Mat_<Event>& ev, const StoreFn& store)
@@ -554,7 +556,8 @@ void StereoEventMatcherImpl::reset()
     {
         maps_[c].configure(size_, descriptorWindow_, maxVectorLength_, margin);
         estimators_[c]->reset();
-        lastEstimate_[c].assign((size_t)size_.area(), PixelEstimate());
+        estimateUntil_[c].assign((size_t)size_.area(), NO_ESTIMATE);
+        estimateDisparity_[c].assign((size_t)size_.area(), -1.f);
         estimateBlocksPerRow_ = divUp(size_.width, (int)ESTIMATE_BLOCK);
         estimateBlockUntil_[c].assign((size_t)size_.height * estimateBlocksPerRow_, 0);
         lastEventTime_[c].assign((size_t)size_.area(), 0);
@@ -868,7 +871,8 @@ void StereoEventMatcherImpl::renderDisparity(double t, OutputArray image, int ca
     Mat img = image.getMat();
     img.setTo(Scalar::all(0));
     const Mat lut = colourLut();
-    const std::vector<PixelEstimate>& last = lastEstimate_[camera];
+    const std::vector<int64>& until = estimateUntil_[camera];
+    const std::vector<float>& disparity = estimateDisparity_[camera];
     const std::vector<int64>& lastTime = lastEventTime_[camera];
     for (int y = 0; y < size_.height; y++)
     {
@@ -876,10 +880,9 @@ void StereoEventMatcherImpl::renderDisparity(double t, OutputArray image, int ca
         for (int x = 0; x < size_.width; x++)
         {
             const size_t i = (size_t)y * size_.width + x;
-            const PixelEstimate& q = last[i];
-            if (q.disparity < 0 || !((double)lastTime[i] <= t && t < (double)q.until))
+            if (until[i] == NO_ESTIMATE || !((double)lastTime[i] <= t && t < (double)until[i]))
                 continue;
-            row[x] = lut.at<Vec3b>(colourIndex(q.disparity));
+            row[x] = lut.at<Vec3b>(colourIndex(disparity[i]));
         }
     }
     if (!colourBar)

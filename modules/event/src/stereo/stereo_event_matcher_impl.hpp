@@ -152,15 +152,6 @@ public:
     String getDefaultName() const CV_OVERRIDE { return "StereoEventMatcher"; }
 
 private:
-    // Per pixel of each sensor, the end of its last event's activity and its disparity (-1: none), for the
-    // left-right check and for renderDisparity. One struct: the check reads both together. The event's time,
-    // which only the rendering reads, lies apart (lastEventTime_), so that a row of the check spans fewer
-    // cache lines (16 bytes per pixel instead of 24).
-    struct PixelEstimate
-    {
-        int64 until = 0;
-        float disparity = -1.f;
-    };
     // What process() stores for event i.
     typedef std::function<void(int, const StereoEventEstimate&)> StoreFn;
 
@@ -311,9 +302,15 @@ private:
     Ptr<LifetimeEstimator> estimators_[2];
     ZouDescriptorMap maps_[2];
     FrameSgbmMatcher frames_;
-    std::vector<PixelEstimate> lastEstimate_[2];
-    // Per ESTIMATE_BLOCK pixels of a row: at least the latest `until` of the block's estimates with a disparity
-    // (it only grows), so that a scan of the neighbours' estimates skips the blocks where none can be active.
+    // Per pixel of each sensor, the last event's estimate, for the neighbours' estimates (the prior, past the
+    // view, the left-right check) and renderDisparity: the end of its activity (NO_ESTIMATE when it has no
+    // disparity, so that one compare tells an active estimate) and its disparity. Two arrays: the scans read
+    // the ends of a row's estimates, and a disparity only where one is active.
+    std::vector<int64> estimateUntil_[2];
+    std::vector<float> estimateDisparity_[2];
+    static constexpr int64 NO_ESTIMATE = std::numeric_limits<int64>::min();
+    // Per ESTIMATE_BLOCK pixels of a row: at least the latest estimateUntil_ of the block (it only grows), so
+    // that a scan skips the blocks where no estimate can be active.
     enum { ESTIMATE_BLOCK = 16 };
     std::vector<int64> estimateBlockUntil_[2];
     int estimateBlocksPerRow_ = 0;

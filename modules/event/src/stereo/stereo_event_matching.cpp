@@ -352,14 +352,14 @@ bool StereoEventMatcherImpl::consistent(int c, int x, int y, double d, int64 t, 
 size_t StereoEventMatcherImpl::activeEstimateMedian(int c, Point centre, int radius, int columns, int64 t,
                                                     MatchScratch& s, float& median) const
 {
-    const std::vector<PixelEstimate>& last = lastEstimate_[c];
     std::vector<float>& disparities = s.disparities;
     disparities.clear();
     const int x0 = std::max(0, centre.x - columns), x1 = std::min(size_.width - 1, centre.x + columns);
     const int block0 = x0 / ESTIMATE_BLOCK, block1 = x1 / ESTIMATE_BLOCK;
     for (int y = std::max(0, centre.y - radius); y <= std::min(size_.height - 1, centre.y + radius); y++)
     {
-        const PixelEstimate* row = &last[(size_t)y * size_.width];
+        const int64* until = &estimateUntil_[c][(size_t)y * size_.width];
+        const float* disparity = &estimateDisparity_[c][(size_t)y * size_.width];
         const int64* blockUntil = &estimateBlockUntil_[c][(size_t)y * estimateBlocksPerRow_];
         for (int b = block0; b <= block1; b++)
         {
@@ -367,8 +367,8 @@ size_t StereoEventMatcherImpl::activeEstimateMedian(int c, Point centre, int rad
                 continue;
             const int xe = std::min(x1, (b + 1) * (int)ESTIMATE_BLOCK - 1);
             for (int x = std::max(x0, b * (int)ESTIMATE_BLOCK); x <= xe; x++)
-                if (row[x].disparity >= 0 && t < row[x].until)
-                    disparities.push_back(row[x].disparity);
+                if (t < until[x])
+                    disparities.push_back(disparity[x]);
         }
     }
     if (disparities.empty())
