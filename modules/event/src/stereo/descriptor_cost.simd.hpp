@@ -15,6 +15,8 @@
 
 #include "opencv2/core/hal/intrin.hpp"
 
+#include "common/simd_kernel_name.hpp"
+
 namespace cv {
 namespace event {
 namespace detail {
@@ -260,28 +262,12 @@ static unsigned rectSadBatch(const uchar* a, const uchar* b, size_t aStep, size_
     return rectSadBatchBlocks<-1>(a, b, aStep, bStep, offsets, n, width, height, sums);
 }
 
-// The name the kernel reports: the instruction set this copy was compiled for.
-static const char* kernelName()
-{
-#if CV_SIMD512
-    return "avx512";
-#elif CV_SIMD256
-    return "avx2";
-#elif CV_NEON
-    return "neon";
-#elif CV_SSE2
-    return "sse2";
-#else
-    return "simd128";
-#endif
-}
-
 DescriptorCostKernels descriptorCostKernels()
 {
     DescriptorCostKernels k;
     k.rectSad = rectSad;
     k.rectSadBatch = rectSadBatch;
-    k.name = kernelName();
+    k.name = simdKernelName();
     return k;
 }
 

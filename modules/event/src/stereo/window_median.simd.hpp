@@ -15,6 +15,8 @@
 
 #include "opencv2/core/hal/intrin.hpp"
 
+#include "common/simd_kernel_name.hpp"
+
 #include <cstring>
 
 namespace cv {
@@ -134,28 +136,12 @@ static int medianPosition(const int* values, int n, uint64* keys)
     CV_Error(Error::StsInternal, "windowMedianPosition: no median (a value equal to the padding?)");
 }
 
-// The name the kernels report: the instruction set this copy was compiled for.
-static const char* kernelName()
-{
-#if CV_SIMD512
-    return "avx512";
-#elif CV_SIMD256
-    return "avx2";
-#elif CV_NEON
-    return "neon";
-#elif CV_SSE2
-    return "sse2";
-#else
-    return "simd128";
-#endif
-}
-
 WindowMedianKernels windowMedianKernels()
 {
     WindowMedianKernels k;
     k.gather = gatherWindow;
     k.medianPosition = medianPosition;
-    k.name = kernelName();
+    k.name = simdKernelName();
     return k;
 }
 
