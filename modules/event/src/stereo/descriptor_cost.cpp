@@ -6,7 +6,7 @@
 // descriptor_cost.simd.hpp, compiled once per instruction set.
 
 #include "precomp.hpp"
-#include "common/scalar_kernels_forced.hpp"
+#include "common/kernel_choice.hpp"
 #include "stereo/descriptor_cost.hpp"
 #include "stereo/zou_descriptor_map.hpp"
 
@@ -56,11 +56,9 @@ static DescriptorCostKernels dispatchedKernels()
     CV_CPU_DISPATCH(descriptorCostKernels, (), CV_CPU_DISPATCH_MODES_ALL);
 }
 
-// Chosen on first use (not during static initialisation, when OpenCV's CPU detection may not have run yet).
 const DescriptorCostKernels& descriptorCostKernelsForThisCpu()
 {
-    static const DescriptorCostKernels k = scalarKernelsForced() ? scalarDescriptorCostKernels() : dispatchedKernels();
-    return k;
+    return kernelsForThisCpu(scalarDescriptorCostKernels, dispatchedKernels);
 }
 
 DescriptorRectSadFn descriptorRectSadFunction()

@@ -6,7 +6,7 @@
 // window_median.simd.hpp, compiled once per instruction set.
 
 #include "precomp.hpp"
-#include "common/scalar_kernels_forced.hpp"
+#include "common/kernel_choice.hpp"
 #include "stereo/window_median.hpp"
 
 #include <algorithm>
@@ -62,11 +62,9 @@ static WindowMedianKernels dispatchedKernels()
     CV_CPU_DISPATCH(windowMedianKernels, (), CV_CPU_DISPATCH_MODES_ALL);
 }
 
-// Chosen on first use (not during static initialisation, when OpenCV's CPU detection may not have run yet).
 const WindowMedianKernels& windowMedianKernelsForThisCpu()
 {
-    static const WindowMedianKernels k = scalarKernelsForced() ? scalarWindowMedianKernels() : dispatchedKernels();
-    return k;
+    return kernelsForThisCpu(scalarWindowMedianKernels, dispatchedKernels);
 }
 
 }  // namespace detail

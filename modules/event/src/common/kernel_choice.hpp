@@ -2,8 +2,8 @@
 // It is subject to the license terms in the LICENSE file found in the top-level directory
 // of this distribution and at http://opencv.org/license.html.
 
-#ifndef OPENCV_EVENT_SRC_COMMON_SCALAR_KERNELS_FORCED_HPP
-#define OPENCV_EVENT_SRC_COMMON_SCALAR_KERNELS_FORCED_HPP
+#ifndef OPENCV_EVENT_SRC_COMMON_KERNEL_CHOICE_HPP
+#define OPENCV_EVENT_SRC_COMMON_KERNEL_CHOICE_HPP
 
 #include <cstdlib>
 #include <cstring>
@@ -20,8 +20,18 @@ inline bool scalarKernelsForced()
     return v && *v && std::strcmp(v, "0") != 0;
 }
 
+/** A kernel family's versions for this CPU: the scalar ones when scalarKernelsForced(), else `dispatched()`
+(CV_CPU_DISPATCH over the instruction sets the module was built for). Chosen on the first call, not during
+static initialisation, when OpenCV's CPU detection may not have run yet. */
+template <typename Kernels>
+const Kernels& kernelsForThisCpu(Kernels (*scalar)(), Kernels (*dispatched)())
+{
+    static const Kernels k = scalarKernelsForced() ? scalar() : dispatched();
+    return k;
+}
+
 }  // namespace detail
 }  // namespace event
 }  // namespace cv
 
-#endif  // OPENCV_EVENT_SRC_COMMON_SCALAR_KERNELS_FORCED_HPP
+#endif  // OPENCV_EVENT_SRC_COMMON_KERNEL_CHOICE_HPP
