@@ -52,12 +52,6 @@ CV_EXPORTS WindowMedianKernels scalarWindowMedianKernels();
 /** The kernels for this CPU, chosen on the first call (OPENCV_EVENT_SCALAR_KERNELS=1 forces the scalar ones). */
 CV_EXPORTS const WindowMedianKernels& windowMedianKernelsForThisCpu();
 
-/** The median position by windowMedianKernelsForThisCpu(). */
-inline int windowMedianPosition(const int* values, int n, uint64* keys)
-{
-    return windowMedianKernelsForThisCpu().medianPosition(values, n, keys);
-}
-
 /** The selection above WINDOW_MEDIAN_RANKED values, which every version shares. */
 CV_EXPORTS int windowMedianPositionBySelection(const int* values, int n, uint64* keys);
 

@@ -31,33 +31,34 @@ WindowMedianKernels windowMedianKernels();
 
 #if CV_SIMD
 
+#if CV_SIMD512 && CV_AVX512_SKX
+// Up to 16 lifetimes at lifetimes + index, the lanes of `lanes`: the active ones' bits to values + n and their
+// indices to positions + n (a whole vector is stored each time); returns n plus their count.
+static inline int gatherLanes(const float* lifetimes, int index, __mmask16 lanes, int* values, int* positions, int n)
+{
+    const __m512i columns = _mm512_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15);
+    const __m512 a = _mm512_maskz_loadu_ps(lanes, lifetimes + index);
+    const __mmask16 active = _mm512_mask_cmp_ps_mask(lanes, a, _mm512_setzero_ps(), _CMP_GT_OQ);
+    _mm512_storeu_si512(values + n, _mm512_maskz_compress_epi32(active, _mm512_castps_si512(a)));
+    _mm512_storeu_si512(positions + n,
+                        _mm512_maskz_compress_epi32(active, _mm512_add_epi32(_mm512_set1_epi32(index), columns)));
+    return n + (int)_mm_popcnt_u32(active);
+}
+#endif
+
 static int gatherWindow(const float* lifetimes, int first, int rowStep, int width, int rows, int* values,
                         int* positions)
 {
     CV_DbgAssert(width <= 32);
     int n = 0;
 #if CV_SIMD512 && CV_AVX512_SKX
-    const __m512 zero = _mm512_setzero_ps();
-    const __m512i columns = _mm512_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15);
     const __mmask16 left = (__mmask16)(width >= 16 ? 0xFFFFu : (1u << width) - 1u);
     const __mmask16 right = (__mmask16)(width > 16 ? (1u << (width - 16)) - 1u : 0u);
     for (int r = 0, index = first; r < rows; r++, index += rowStep)
     {
-        const __m512 a = _mm512_maskz_loadu_ps(left, lifetimes + index);
-        const __mmask16 active = _mm512_mask_cmp_ps_mask(left, a, zero, _CMP_GT_OQ);
-        _mm512_storeu_si512(values + n, _mm512_maskz_compress_epi32(active, _mm512_castps_si512(a)));
-        _mm512_storeu_si512(positions + n,
-                            _mm512_maskz_compress_epi32(active, _mm512_add_epi32(_mm512_set1_epi32(index), columns)));
-        n += _mm_popcnt_u32(active);
+        n = gatherLanes(lifetimes, index, left, values, positions, n);
         if (right)
-        {
-            const __m512 b = _mm512_maskz_loadu_ps(right, lifetimes + index + 16);
-            const __mmask16 activeB = _mm512_mask_cmp_ps_mask(right, b, zero, _CMP_GT_OQ);
-            _mm512_storeu_si512(values + n, _mm512_maskz_compress_epi32(activeB, _mm512_castps_si512(b)));
-            _mm512_storeu_si512(positions + n, _mm512_maskz_compress_epi32(
-                                                   activeB, _mm512_add_epi32(_mm512_set1_epi32(index + 16), columns)));
-            n += _mm_popcnt_u32(activeB);
-        }
+            n = gatherLanes(lifetimes, index + 16, right, values, positions, n);
     }
 #else
     // First every row's activity, with no branch: the rows' loads are independent, so that their cache misses
@@ -133,7 +134,7 @@ static int medianPosition(const int* values, int n, uint64* keys)
                     return j;
         }
     }
-    CV_Error(Error::StsInternal, "windowMedianPosition: no median (a value equal to the padding?)");
+    CV_Error(Error::StsInternal, "WindowMedianKernels::medianPosition: no median (a value equal to the padding?)");
 }
 
 WindowMedianKernels windowMedianKernels()
