@@ -31,7 +31,7 @@ PERF_TEST_P(Event_DescriptorMap, activate_and_expire_100k, testing::Values(Size(
         for (int i = 0; i < n; i++)
         {
             map.expireUntil(i);
-            map.activate(events[(size_t)i].x, events[(size_t)i].y, events[(size_t)i].z, i + 2000, 2000.f, Vec2f());
+            map.activate(events[(size_t)i].x, events[(size_t)i].y, events[(size_t)i].z, i, i + 2000, 2000.f, Vec2f());
         }
         stopTimer();
     }

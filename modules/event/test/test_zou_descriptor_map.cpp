@@ -147,7 +147,7 @@ TEST(Event_ZouDescriptorMap, incremental_descriptors_equal_descriptors_from_scra
             else
             {
                 const int64 until = t + rng.uniform(1, 400);
-                map.activate(x, y, p, until, 1.f, Vec2f());
+                map.activate(x, y, p, t, until, 1.f, Vec2f());
                 changes += !active[i];
                 active[i] = 1;
                 expiry[i] = until;
@@ -159,6 +159,34 @@ TEST(Event_ZouDescriptorMap, incremental_descriptors_equal_descriptors_from_scra
         // vectors compete and deactivations must re-search.
         EXPECT_GT(changes, 300);
         EXPECT_GT(mostActive, 30);
+    }
+}
+
+// The recency cost's input: the time of each pixel's active event by row, NOT_ACTIVE where none is (in the
+// image's corner as well, with no border around the per-pixel arrays: vector length 0).
+TEST(Event_ZouDescriptorMap, active_time_rows_hold_the_active_events_times)
+{
+    for (int maxVectorLength : { 3, 0 })
+    {
+        SCOPED_TRACE(cv::format("max vector length %d", maxVectorLength));
+        ZouDescriptorMap map;
+        map.configure(Size(8, 6), 3, maxVectorLength, 1);
+        for (int y = 0; y < 6; y++)
+            for (int x = 0; x < 8; x++)
+                ASSERT_EQ(map.activeTimeRow(y, 1)[x], ZouDescriptorMap::NOT_ACTIVE);
+        map.activate(0, 0, 1, 1000, 100000, 1.f, Vec2f());
+        map.activate(7, 5, 1, 7500, 100000, 1.f, Vec2f());
+        map.activate(7, 5, 0, 5000, 100000, 1.f, Vec2f());  // the other polarity
+        map.activate(0, 0, 1, 2500, 100000, 1.f, Vec2f());  // a later event of the same pixel
+        EXPECT_EQ(map.activeTimeRow(0, 1)[0], 2500);
+        EXPECT_EQ(map.activeTimeRow(5, 1)[7], 7500);
+        EXPECT_EQ(map.activeTimeRow(5, 0)[7], 5000);
+        EXPECT_EQ(map.activeTimeRow(5, 0)[6], ZouDescriptorMap::NOT_ACTIVE);
+        map.deactivate(7, 5, 1);
+        map.expireUntil(100000 + 2500);
+        EXPECT_EQ(map.activeTimeRow(5, 1)[7], ZouDescriptorMap::NOT_ACTIVE);
+        EXPECT_EQ(map.activeTimeRow(0, 1)[0], ZouDescriptorMap::NOT_ACTIVE);
+        EXPECT_EQ(map.activeTimeRow(5, 0)[7], ZouDescriptorMap::NOT_ACTIVE);
     }
 }
 

@@ -153,7 +153,7 @@ void StereoEventMatcherImpl::processAdmitted(const Event& e, Point r, int64 cold
         est.lifetime = processEventInRows(estimator, re, est.flow, status, s.lifetimes[c]);
     }
     // The event takes part in its own descriptor while it is matched; its final activity follows below.
-    activateUndecided(c, r, p);
+    activateUndecided(c, r, p, e.t);
     // Where the neighbours put the event's counterpart past the other sensor's border, there is nothing to
     // match: their estimates decide (no counterpart, so no matched window for the lifetime either).
     MatchResult m;
@@ -231,7 +231,7 @@ void StereoEventMatcherImpl::processAdmitted(const Event& e, Point r, int64 cold
     if (!laterPending)
     {
         if (activeFor > 0)
-            maps_[c].activate(r.x, r.y, p, timeAfter(e.t, activeFor), est.lifetime, est.flow,
+            maps_[c].activate(r.x, r.y, p, e.t, timeAfter(e.t, activeFor), est.lifetime, est.flow,
                               status == LIFETIME_MATCHED ? lifetimeCopies : 0);
         else
             maps_[c].deactivate(r.x, r.y, p);
@@ -262,9 +262,9 @@ void StereoEventMatcherImpl::processAdmitted(const Event& e, Point r, int64 cold
     remember(c, r, e.t, noiseActive ? 0 : activeFor, est.disparity);
 }
 
-void StereoEventMatcherImpl::activateUndecided(int c, Point r, int p)
+void StereoEventMatcherImpl::activateUndecided(int c, Point r, int p, int64 t)
 {
-    maps_[c].activate(r.x, r.y, p, std::numeric_limits<int64>::max(), 0.f, Vec2f());
+    maps_[c].activate(r.x, r.y, p, t, std::numeric_limits<int64>::max(), 0.f, Vec2f());
 }
 
 // How long an event with this lifetime (us per pixel) stays active: until its edge has moved
@@ -408,7 +408,7 @@ void StereoEventMatcherImpl::processOperations(const Mat_<Event>& ev, const Stor
         const size_t pixel = ((size_t)a.rectified.y * size_.width + a.rectified.x) * 2 + p;
         if (!(operations_[(size_t)k] & 1))
         {
-            activateUndecided(e.camera, a.rectified, p);
+            activateUndecided(e.camera, a.rectified, p, e.t);
             pendingEvents_[e.camera][pixel]++;
             return;
         }
@@ -592,6 +592,8 @@ void StereoEventMatcherImpl::sizeScratch(MatchScratch& s) const
     s.offsets.resize(range);
     s.cost.resize(range);
     s.seenScore.resize(range);
+    s.recencyShare.resize(range);
+    s.columnTimeGap.resize((size_t)size_.width);
     s.columnMass.resize((size_t)aggregationWindow_);
     s.unseenMass.resize((size_t)aggregationWindow_ + 1);
 }
@@ -721,6 +723,21 @@ void StereoEventMatcherImpl::setPriorTolerance(int percent)
     priorTolerance_ = percent;
 }
 
+void StereoEventMatcherImpl::setRecencyWeight(int percent)
+{
+    if (percent < 0 || percent > 100)
+        CV_Error_(Error::StsBadArg, ("StereoEventMatcher: recency weight %d %%; must be 0..100 %% (0: the cost of the "
+                                     "descriptors alone)", percent));
+    recencyWeight_ = percent;
+}
+
+void StereoEventMatcherImpl::setRecencyTime(double us)
+{
+    if (!(us >= 1 && us <= 1e6))
+        CV_Error_(Error::StsBadArg, ("StereoEventMatcher: recency time %g us; must be 1..1e6 us", us));
+    recencyTime_ = (int64)std::llround(us);
+}
+
 void StereoEventMatcherImpl::setLookAhead(double us)
 {
     if (!(us >= 0 && us <= 1e6))
@@ -767,7 +784,8 @@ void StereoEventMatcherImpl::write(FileStorage& fs) const
        << "aggregationWindow" << aggregationWindow_ << "uniquenessRatio" << uniquenessRatio_
        << "minConfidence" << minConfidence_ << "matchedLifetimeConfidence" << matchedLifetimeConfidence_
        << "maxLifetimeCopies" << maxLifetimeCopies_
-       << "priorTolerance" << priorTolerance_ << "lookAhead" << (double)lookAhead_ << "fixedInterval" << (double)fixedInterval_
+       << "priorTolerance" << priorTolerance_ << "recencyWeight" << recencyWeight_ << "recencyTime" << (double)recencyTime_
+       << "lookAhead" << (double)lookAhead_ << "fixedInterval" << (double)fixedInterval_
        << "frameWindow" << (double)frameWindow_ << "maxLifetime" << (double)maxLifetime_ << "activeDistance"
        << activeDistance_ << "noiseActiveTime" << (double)noiseActiveTime_;
     fs << "lifetimeEstimator" << "{";
@@ -806,6 +824,8 @@ void StereoEventMatcherImpl::read(const FileNode& fn)
     setMatchedLifetimeConfidence(num("matchedLifetimeConfidence", matchedLifetimeConfidence_));
     setMaxLifetimeCopies((int)num("maxLifetimeCopies", maxLifetimeCopies_));
     setPriorTolerance((int)num("priorTolerance", priorTolerance_));
+    setRecencyWeight((int)num("recencyWeight", recencyWeight_));
+    setRecencyTime(num("recencyTime", (double)recencyTime_));
     setLookAhead(num("lookAhead", (double)lookAhead_));
     setFixedInterval(num("fixedInterval", (double)fixedInterval_));
     setFrameWindow(num("frameWindow", (double)frameWindow_));

@@ -48,6 +48,8 @@ struct alignas(64) MatchScratch
     std::vector<unsigned> cost;
     int64 lifetimeTicks = 0;  // time in the lifetime estimation (setTimeLifetimes), cv::getTickCount() units
     std::vector<unsigned> seenScore;
+    std::vector<float> recencyShare;   // per candidate (match())
+    std::vector<int64> columnTimeGap;  // per column of the other sensor (recencyShares())
     std::vector<unsigned> columnMass;
     std::vector<unsigned> unseenMass;
     std::vector<int> matchedValues, matchedPositions;  // the window's active lifetimes (their bits) and indices
@@ -123,6 +125,10 @@ public:
     int getPriorTolerance() const CV_OVERRIDE { return priorTolerance_; }
 
     void setPriorTolerance(int percent) CV_OVERRIDE;
+    int getRecencyWeight() const CV_OVERRIDE { return recencyWeight_; }
+    void setRecencyWeight(int percent) CV_OVERRIDE;
+    double getRecencyTime() const CV_OVERRIDE { return (double)recencyTime_; }
+    void setRecencyTime(double us) CV_OVERRIDE;
     double getLookAhead() const CV_OVERRIDE { return (double)lookAhead_; }
 
     void setLookAhead(double us) CV_OVERRIDE;
@@ -176,9 +182,15 @@ private:
     Point admit(const Event& e);
 
     void remember(int c, Point r, int64 t, int64 activeFor, float disparity);
-    // Makes the event at rectified pixel r active in sensor c's map until its decision sets its activity: it
-    // takes part in the descriptors of the events matched meanwhile, its own included.
-    void activateUndecided(int c, Point r, int p);
+    // Makes the event of time t at rectified pixel r active in sensor c's map until its decision sets its
+    // activity: it takes part in the descriptors of the events matched meanwhile, its own included.
+    void activateUndecided(int c, Point r, int p, int64 t);
+    // The candidates' shares of the recency cost (s.recencyShare) for an event of time t matched against
+    // `other` (see match()), reading its columns `columns` (recencyColumnRange).
+    void recencyShares(const ZouDescriptorMap& other, const Range& columns, int sign, Point r, int p, int64 t,
+                       MatchScratch& s) const;
+    // The other sensor's columns within a pixel of the candidates (s.candidates), inside the image.
+    Range recencyColumnRange(int sign, Point r, const MatchScratch& s) const;
 
     // How long an event with this lifetime (us per pixel) stays active: until its edge has moved
     // activeDistance_ pixels, at most maxLifetime_.
@@ -295,6 +307,8 @@ private:
     double minConfidence_ = 0, matchedLifetimeConfidence_ = 0.15;
     int maxLifetimeCopies_ = 1;
     int priorTolerance_ = 30;
+    int recencyWeight_ = 15;
+    int64 recencyTime_ = 10000;
     int64 lookAhead_ = 10000;
     StereoCalibration calibration_;
     std::vector<int> lut_[2];  // raw pixel -> rectified pixel index (-1: outside); empty: no calibration

@@ -7,6 +7,7 @@
 
 #include "precomp.hpp"
 #include "stereo/stereo_event_matcher_impl.hpp"
+#include "common/prefetch.hpp"
 
 
 namespace cv {
@@ -194,12 +195,32 @@ MatchResult StereoEventMatcherImpl::match(int c, Point r, int p, int64 t, MatchS
         return m;
     }
     std::fill_n(cost, n, 0u);
+    // The other sensor's event times that the recency cost reads are loaded while the first window is summed.
+    const Range recencyColumns = recencyWeight_ > 0 ? recencyColumnRange(sign, r, s) : Range::all();
+    if (recencyWeight_ > 0)
+        for (int y = std::max(0, r.y - 1); y <= std::min(size_.height - 1, r.y + 1); y++)
+            prefetchRange(other.activeTimeRow(y, p) + recencyColumns.start, other.activeTimeRow(y, p) + recencyColumns.end);
     int h = costWindow_ / 2;
     unsigned mass = addRect(self, other, r, -h, h, -h, h, s);
     int columnsAt = -1;
+    if (recencyWeight_ > 0)
+        recencyShares(other, recencyColumns, sign, r, p, t, s);
     for (;;)
     {
-        const unsigned* const score = scoreSeenColumns(self, sign, r, h, columnsAt, s);
+        const unsigned* score = scoreSeenColumns(self, sign, r, h, columnsAt, s);
+        const bool allColumnsSeen = score == cost;
+        // Each candidate pays its share of recencyWeight_ % of the window's mass (its cost against nothing), so
+        // that the recency cost keeps its weight as the aggregation grows the window.
+        const double recencyFullCost = (double)mass * recencyWeight_ / 100.0;
+        const auto recencyCost = [&](int i) { return (uint64)std::lround(recencyFullCost * s.recencyShare[(size_t)i]); };
+        if (recencyWeight_ > 0)
+        {
+            // Into s.seenScore: in place where scoreSeenColumns put the scores there.
+            unsigned* const withRecency = s.seenScore.data();
+            for (int i = 0; i < n; i++)
+                withRecency[i] = (unsigned)std::min<uint64>(std::numeric_limits<unsigned>::max(), (uint64)score[i] + recencyCost(i));
+            score = withRecency;
+        }
         int best = 0;  // index into candidates, which run by disparity: ties go to the smaller disparity
         for (int i = 1; i < n; i++)
             if (score[i] < score[best])
@@ -219,7 +240,7 @@ MatchResult StereoEventMatcherImpl::match(int c, Point r, int p, int64 t, MatchS
         int x0 = -h, x1 = h, y0 = -h, y1 = h;
         clipToImage(r, x0, x1, y0, y1);  // the costs' columns, never empty (r is inside)
         const int width = x1 - x0 + 1;
-        const int seen = width - (score == cost ? 0 : unseenColumns(sign, r, x0, x1, minDisparity_ + kBest));
+        const int seen = width - (allColumnsSeen ? 0 : unseenColumns(sign, r, x0, x1, minDisparity_ + kBest));
         // The alternatives the winner must beat: every candidate further than one pixel away, and "no
         // counterpart (yet)", with the cost of matching against nothing (the window's mass). A winner that
         // only just beats nothing is most often a neighbour of a counterpart that has not arrived yet, off by
@@ -233,6 +254,10 @@ MatchResult StereoEventMatcherImpl::match(int c, Point r, int p, int64 t, MatchS
         uint64 nothing = scaleToWindow(mass - s.unseenMass[(size_t)(width - seen)], width, seen);
         if (!clearlyBelow(bestCost, nothing) && (last || clearlyBelow(bestCost, second)))
             nothing = std::max(nothing, scaleToWindow(rectMass(other, Point(xo, r.y), x0, x1, y0, y1), width, seen));
+        // Against nothing the winner's descriptors count alone: a counterpart that fires a little apart in time is
+        // still there, so its recency cost is added to nothing's as well.
+        if (recencyWeight_ > 0)
+            nothing += recencyCost(best);
         const uint64 alternative = std::min(second, nothing);
         const bool unique = clearlyBelow(bestCost, alternative);
         // Not unique at the largest window: the temporal prior may decide between the near-equals.
@@ -262,6 +287,44 @@ MatchResult StereoEventMatcherImpl::match(int c, Point r, int p, int64 t, MatchS
         mass += addRect(self, other, r, -h, h, h, h, s);
         mass += addRect(self, other, r, -h, -h, -h + 1, h - 1, s);
         mass += addRect(self, other, r, h, h, -h + 1, h - 1, s);
+    }
+}
+
+Range StereoEventMatcherImpl::recencyColumnRange(int sign, Point r, const MatchScratch& s) const
+{
+    // The candidates' columns run from r.x + sign * (min + candidates[0]) to that of the last.
+    const int xFirst = r.x + sign * (minDisparity_ + s.candidates[0]);
+    const int xLast = r.x + sign * (minDisparity_ + s.candidates[(size_t)s.count - 1]);
+    return Range(std::max(0, std::min(xFirst, xLast) - 1), std::min(size_.width, std::max(xFirst, xLast) + 2));
+}
+
+// An edge's events fire in both sensors at about the same time; the trail another edge left a while ago (a
+// slower one: a torso behind a swinging leg, a pole behind a passing box) can match the window's layout as well
+// or better, but not the moment. A candidate's share of the recency cost grows with the time between the event
+// and the other sensor's active event nearest to it in time within a pixel of the candidate: 0 for none, 1
+// from recencyTime_ on, and 1 where no event is active within a pixel (a candidate needs structure only
+// within the maximum vector length). The candidates' 3 x 3 neighbourhoods overlap: the three rows' smallest
+// gap is taken once per column, then the smallest of three columns per candidate.
+void StereoEventMatcherImpl::recencyShares(const ZouDescriptorMap& other, const Range& columns, int sign, Point r, int p,
+                                           int64 t, MatchScratch& s) const
+{
+    const int n = s.count;
+    const int* const candidates = s.candidates.data();
+    const int x0 = columns.start, x1 = columns.end - 1;
+    int64* const gap = s.columnTimeGap.data();
+    std::fill(gap + x0, gap + x1 + 1, std::numeric_limits<int64>::max());
+    for (int y = std::max(0, r.y - 1); y <= std::min(size_.height - 1, r.y + 1); y++)
+    {
+        const int64* const times = other.activeTimeRow(y, p);
+        for (int x = x0; x <= x1; x++)
+            gap[x] = std::min(gap[x], std::abs(t - times[x]));
+    }
+    float* const share = s.recencyShare.data();
+    for (int i = 0; i < n; i++)
+    {
+        const int x = r.x + sign * (minDisparity_ + candidates[i]);
+        const int64 nearest = std::min(gap[x], std::min(gap[std::max(x0, x - 1)], gap[std::min(x1, x + 1)]));
+        share[i] = nearest >= recencyTime_ ? 1.f : (float)((double)nearest / (double)recencyTime_);
     }
 }
 

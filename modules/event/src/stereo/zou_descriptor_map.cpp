@@ -10,6 +10,8 @@ namespace cv {
 namespace event {
 namespace detail {
 
+constexpr int64 ZouDescriptorMap::NOT_ACTIVE;
+
 void ZouDescriptorMap::configure(Size size, int descriptorWindow, int maxVectorLength, int margin)
 {
     CV_Assert(size.width > 0 && size.height > 0 && descriptorWindow % 2 == 1 && maxVectorLength >= 0 &&
@@ -71,6 +73,7 @@ void ZouDescriptorMap::reset()
     for (int p = 0; p < 2; p++)
         for (int y = 0; y < size_.height; y++)
             std::fill_n(&nearest_[(size_t)id(0, y, p)], size_.width, (uchar)NONE);
+    time_.assign(ids, NOT_ACTIVE);
     lifetime_.assign(ids, 0.f);
     flow_.assign(ids, Vec2f());
     copies_.assign(ids, 0);
@@ -216,9 +219,10 @@ int ZouDescriptorMap::scanNearest(int i, int from) const
     return NONE;
 }
 
-void ZouDescriptorMap::activate(int x, int y, int p, int64 expiry, float lifetime, const Vec2f& flow, int copies)
+void ZouDescriptorMap::activate(int x, int y, int p, int64 time, int64 expiry, float lifetime, const Vec2f& flow, int copies)
 {
     const int i = id(x, y, p);
+    time_[i] = time;
     lifetime_[i] = lifetime;
     flow_[i] = flow;
     copies_[i] = (uchar)std::min(copies, 254);
@@ -265,6 +269,7 @@ void ZouDescriptorMap::deactivateId(int i)
     const int p = i / plane, x = (i % plane) % paddedWidth_ - border_, y = (i % plane) / paddedWidth_ - border_;
     heapOfRow(y).remove(i);
     active_[i] = 0;
+    time_[i] = NOT_ACTIVE;
     lifetime_[i] = 0.f;
     const bool interior = isInterior(x, y);
     uchar* const eventBins = bins(x, y, p);

@@ -7,6 +7,7 @@
 
 #include "stereo/expiry_heap.hpp"
 
+#include <limits>
 #include <vector>
 
 namespace cv {
@@ -29,7 +30,7 @@ descriptors. The descriptor map has a zero margin around the image so that cost 
 border without checks. Expiry: an ExpiryHeap over pixel x polarity, one per band of rows (setRowBands), so
 that StereoEventMatcher's row bands each take their own expiries in time order (each band's zones next to its
 neighbours have heaps of their own: RowBandScheduler::splitSegments). The map's state depends only
-on which events are active (and their lifetimes and flows), not on the order in which they were activated or
+on which events are active (and their times, lifetimes and flows), not on the order in which they were activated or
 deactivated: expiries due at the same moment may be taken in any order, band by band.
 
 The per-pixel arrays (activity, nearest vector, lifetime, flow) have a border of the maximum vector length
@@ -73,8 +74,13 @@ public:
     // for memory.
     void prefetchLifetimes(int x0, int x1, int y0, int y1, int p) const;
 
-    // Makes the event at (x, y, p) the pixel's active one until expiry (exclusive) [us].
-    void activate(int x, int y, int p, int64 expiry, float lifetime, const Vec2f& flow, int copies = 0);
+    // The times of row y's active events of polarity p, by column (0..width - 1); NOT_ACTIVE where none is
+    // active, so far from any event's time that |t - NOT_ACTIVE| exceeds every time gap that matters.
+    static constexpr int64 NOT_ACTIVE = std::numeric_limits<int64>::min() / 4;
+    const int64* activeTimeRow(int y, int p) const { return &time_[(size_t)id(0, y, p)]; }
+
+    // Makes the event of time `time` [us] at (x, y, p) the pixel's active one until expiry (exclusive) [us].
+    void activate(int x, int y, int p, int64 time, int64 expiry, float lifetime, const Vec2f& flow, int copies = 0);
     void deactivate(int x, int y, int p);
     // Deactivates every event whose expiry is <= t.
     void expireUntil(int64 t);
@@ -148,6 +154,7 @@ private:
     // Per offset k: from an event's own bins to the first bins of the window of the pixel that sees it at k.
     std::vector<ptrdiff_t> voteOffsets_;
     std::vector<uchar> active_, nearest_;
+    std::vector<int64> time_;  // of the active event; NOT_ACTIVE where none is
     std::vector<float> lifetime_;
     std::vector<Vec2f> flow_;
     std::vector<uchar> copies_;  // copiesAt()

@@ -81,6 +81,16 @@ reaches past the other image's border, the other sensor cannot see those columns
 taken over the columns it sees, scaled to the whole window, and so is the cost of "no counterpart yet", so
 that what one camera alone sees counts neither for nor against a candidate.
 
+**Recency.** The events of one edge fire in both sensors at about the same time, while a descriptor window
+also holds the trails that other edges left while their events stay active: where a fast edge passes in
+front of a slower one (a leg before the torso, a box before a pole), the slower edge's trail can match the
+window's layout as well as the event's own edge does, at the slower edge's disparity. Each candidate
+therefore also pays a recency cost: getRecencyWeight() % of the window's descriptor mass, times the time
+between the event and the other sensor's active event nearest to it in time within a pixel of the candidate,
+over getRecencyTime() (at most 1; 1 when no event is active within a pixel). It ranks the candidates:
+against "no counterpart yet" (below) the winner's recency cost is added to the cost of nothing as well, as a
+counterpart that fires a little apart in time is still a counterpart.
+
 **Decision.** The alternatives to the cheapest candidate (the winner) are every candidate further than one
 pixel from it and "no counterpart yet", whose cost is that of matching against nothing (the window's
 descriptor mass, on either sensor). Aggregation is iterative: while the winner does not beat every alternative
@@ -248,6 +258,16 @@ public:
     for it to win an otherwise ambiguous match (default 30; 0..1000; 0: no prior, the method as published). */
     CV_WRAP virtual int getPriorTolerance() const = 0;
     CV_WRAP virtual void setPriorTolerance(int percent) = 0;
+    /** @brief Recency cost: the share [%] of the window's descriptor mass (its cost against nothing) that a
+    candidate pays when the other sensor's events within a pixel of it are getRecencyTime() or more apart in
+    time from the event, in proportion below that (default 15; 0..100; 0: the descriptors' cost alone, as
+    published). See the class description. */
+    CV_WRAP virtual int getRecencyWeight() const = 0;
+    CV_WRAP virtual void setRecencyWeight(int percent) = 0;
+    /** @brief Recency cost: the time apart [us] from which a candidate pays the full recency cost (default
+    10000; 1..1e6). */
+    CV_WRAP virtual double getRecencyTime() const = 0;
+    CV_WRAP virtual void setRecencyTime(double us) = 0;
     /** @brief Look-ahead L [us] (COUPLED, DECOUPLED, FIXED_INTERVAL; default 10000; 0..1e6). process() puts
     each event into its sensor's map when it arrives, but matches it (and gives it its lifetime) only once an
     event more than L later has arrived, or at the end of the packet: a counterpart that fires up to L later
