@@ -162,31 +162,35 @@ TEST(Event_ZouDescriptorMap, incremental_descriptors_equal_descriptors_from_scra
     }
 }
 
-// The recency cost's input: the time of each pixel's active event by row, NOT_ACTIVE where none is (in the
-// image's corner as well, with no border around the per-pixel arrays: vector length 0).
-TEST(Event_ZouDescriptorMap, active_time_rows_hold_the_active_events_times)
+// The recency cost's input: by row, whether an event is active and its time (in the image's corner as well,
+// with no border around the per-pixel arrays: vector length 0).
+TEST(Event_ZouDescriptorMap, active_and_time_rows_hold_the_active_events)
 {
     for (int maxVectorLength : { 3, 0 })
     {
         SCOPED_TRACE(cv::format("max vector length %d", maxVectorLength));
         ZouDescriptorMap map;
         map.configure(Size(8, 6), 3, maxVectorLength, 1);
-        for (int y = 0; y < 6; y++)
-            for (int x = 0; x < 8; x++)
-                ASSERT_EQ(map.activeTimeRow(y, 1)[x], ZouDescriptorMap::NOT_ACTIVE);
+        for (int p = 0; p < 2; p++)
+            for (int y = 0; y < 6; y++)
+                for (int x = 0; x < 8; x++)
+                    ASSERT_EQ(map.activeRow(y, p)[x], 0);
         map.activate(0, 0, 1, 1000, 100000, 1.f, Vec2f());
         map.activate(7, 5, 1, 7500, 100000, 1.f, Vec2f());
-        map.activate(7, 5, 0, 5000, 100000, 1.f, Vec2f());  // the other polarity
+        map.activate(7, 5, 0, std::numeric_limits<int64>::min(), 100000, 1.f, Vec2f());  // the other polarity
         map.activate(0, 0, 1, 2500, 100000, 1.f, Vec2f());  // a later event of the same pixel
-        EXPECT_EQ(map.activeTimeRow(0, 1)[0], 2500);
-        EXPECT_EQ(map.activeTimeRow(5, 1)[7], 7500);
-        EXPECT_EQ(map.activeTimeRow(5, 0)[7], 5000);
-        EXPECT_EQ(map.activeTimeRow(5, 0)[6], ZouDescriptorMap::NOT_ACTIVE);
+        EXPECT_NE(map.activeRow(0, 1)[0], 0);
+        EXPECT_EQ(map.eventTimeRow(0, 1)[0], 2500);
+        EXPECT_EQ(map.eventTimeRow(5, 1)[7], 7500);
+        EXPECT_EQ(map.eventTimeRow(5, 0)[7], std::numeric_limits<int64>::min());
+        EXPECT_EQ(map.activeRow(5, 0)[6], 0);
+        EXPECT_EQ(map.activeRow(0, 0)[0], 0);
         map.deactivate(7, 5, 1);
-        map.expireUntil(100000 + 2500);
-        EXPECT_EQ(map.activeTimeRow(5, 1)[7], ZouDescriptorMap::NOT_ACTIVE);
-        EXPECT_EQ(map.activeTimeRow(0, 1)[0], ZouDescriptorMap::NOT_ACTIVE);
-        EXPECT_EQ(map.activeTimeRow(5, 0)[7], ZouDescriptorMap::NOT_ACTIVE);
+        EXPECT_EQ(map.activeRow(5, 1)[7], 0);
+        EXPECT_NE(map.activeRow(0, 1)[0], 0);
+        map.expireUntil(100000);
+        EXPECT_EQ(map.activeRow(0, 1)[0], 0);
+        EXPECT_EQ(map.activeRow(5, 0)[7], 0);
     }
 }
 

@@ -49,7 +49,7 @@ struct alignas(64) MatchScratch
     int64 lifetimeTicks = 0;  // time in the lifetime estimation (setTimeLifetimes), cv::getTickCount() units
     std::vector<unsigned> seenScore;
     std::vector<float> recencyShare;   // per candidate (match())
-    std::vector<int64> columnTimeGap;  // per column of the other sensor (recencyShares())
+    std::vector<uint64> columnTimeGap;  // per column of the other sensor (recencyShares())
     std::vector<unsigned> columnMass;
     std::vector<unsigned> unseenMass;
     std::vector<int> matchedValues, matchedPositions;  // the window's active lifetimes (their bits) and indices

@@ -199,7 +199,10 @@ MatchResult StereoEventMatcherImpl::match(int c, Point r, int p, int64 t, MatchS
     const Range recencyColumns = recencyWeight_ > 0 ? recencyColumnRange(sign, r, s) : Range::all();
     if (recencyWeight_ > 0)
         for (int y = std::max(0, r.y - 1); y <= std::min(size_.height - 1, r.y + 1); y++)
-            prefetchRange(other.activeTimeRow(y, p) + recencyColumns.start, other.activeTimeRow(y, p) + recencyColumns.end);
+        {
+            prefetchRange(other.eventTimeRow(y, p) + recencyColumns.start, other.eventTimeRow(y, p) + recencyColumns.end);
+            prefetchRange(other.activeRow(y, p) + recencyColumns.start, other.activeRow(y, p) + recencyColumns.end);
+        }
     int h = costWindow_ / 2;
     unsigned mass = addRect(self, other, r, -h, h, -h, h, s);
     int columnsAt = -1;
@@ -311,20 +314,25 @@ void StereoEventMatcherImpl::recencyShares(const ZouDescriptorMap& other, const 
     const int n = s.count;
     const int* const candidates = s.candidates.data();
     const int x0 = columns.start, x1 = columns.end - 1;
-    int64* const gap = s.columnTimeGap.data();
-    std::fill(gap + x0, gap + x1 + 1, std::numeric_limits<int64>::max());
+    uint64* const gap = s.columnTimeGap.data();
+    std::fill(gap + x0, gap + x1 + 1, std::numeric_limits<uint64>::max());
     for (int y = std::max(0, r.y - 1); y <= std::min(size_.height - 1, r.y + 1); y++)
     {
-        const int64* const times = other.activeTimeRow(y, p);
+        const uchar* const active = other.activeRow(y, p);
+        const int64* const times = other.eventTimeRow(y, p);
+        // |t - time| in unsigned arithmetic: exact for any two int64 times, without overflow.
         for (int x = x0; x <= x1; x++)
-            gap[x] = std::min(gap[x], std::abs(t - times[x]));
+        {
+            const uint64 apart = t >= times[x] ? (uint64)t - (uint64)times[x] : (uint64)times[x] - (uint64)t;
+            gap[x] = std::min(gap[x], active[x] ? apart : std::numeric_limits<uint64>::max());
+        }
     }
     float* const share = s.recencyShare.data();
     for (int i = 0; i < n; i++)
     {
         const int x = r.x + sign * (minDisparity_ + candidates[i]);
-        const int64 nearest = std::min(gap[x], std::min(gap[std::max(x0, x - 1)], gap[std::min(x1, x + 1)]));
-        share[i] = nearest >= recencyTime_ ? 1.f : (float)((double)nearest / (double)recencyTime_);
+        const uint64 nearest = std::min(gap[x], std::min(gap[std::max(x0, x - 1)], gap[std::min(x1, x + 1)]));
+        share[i] = nearest >= (uint64)recencyTime_ ? 1.f : (float)((double)nearest / (double)recencyTime_);
     }
 }
 

@@ -10,8 +10,6 @@ namespace cv {
 namespace event {
 namespace detail {
 
-constexpr int64 ZouDescriptorMap::NOT_ACTIVE;
-
 void ZouDescriptorMap::configure(Size size, int descriptorWindow, int maxVectorLength, int margin)
 {
     CV_Assert(size.width > 0 && size.height > 0 && descriptorWindow % 2 == 1 && maxVectorLength >= 0 &&
@@ -73,7 +71,7 @@ void ZouDescriptorMap::reset()
     for (int p = 0; p < 2; p++)
         for (int y = 0; y < size_.height; y++)
             std::fill_n(&nearest_[(size_t)id(0, y, p)], size_.width, (uchar)NONE);
-    time_.assign(ids, NOT_ACTIVE);
+    time_.assign(ids, 0);
     lifetime_.assign(ids, 0.f);
     flow_.assign(ids, Vec2f());
     copies_.assign(ids, 0);
@@ -269,7 +267,6 @@ void ZouDescriptorMap::deactivateId(int i)
     const int p = i / plane, x = (i % plane) % paddedWidth_ - border_, y = (i % plane) / paddedWidth_ - border_;
     heapOfRow(y).remove(i);
     active_[i] = 0;
-    time_[i] = NOT_ACTIVE;
     lifetime_[i] = 0.f;
     const bool interior = isInterior(x, y);
     uchar* const eventBins = bins(x, y, p);

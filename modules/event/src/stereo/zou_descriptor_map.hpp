@@ -7,7 +7,6 @@
 
 #include "stereo/expiry_heap.hpp"
 
-#include <limits>
 #include <vector>
 
 namespace cv {
@@ -74,10 +73,11 @@ public:
     // for memory.
     void prefetchLifetimes(int x0, int x1, int y0, int y1, int p) const;
 
-    // The times of row y's active events of polarity p, by column (0..width - 1); NOT_ACTIVE where none is
-    // active, so far from any event's time that |t - NOT_ACTIVE| exceeds every time gap that matters.
-    static constexpr int64 NOT_ACTIVE = std::numeric_limits<int64>::min() / 4;
-    const int64* activeTimeRow(int y, int p) const { return &time_[(size_t)id(0, y, p)]; }
+    // Row y of isActive for polarity p, by column (0..width - 1): nonzero where an event is active.
+    const uchar* activeRow(int y, int p) const { return &active_[(size_t)id(0, y, p)]; }
+    // Row y's times of the events of polarity p, by column; the time of the active event where activeRow says
+    // one is (elsewhere a past event's or 0: any value is a valid time, so no value marks "none").
+    const int64* eventTimeRow(int y, int p) const { return &time_[(size_t)id(0, y, p)]; }
 
     // Makes the event of time `time` [us] at (x, y, p) the pixel's active one until expiry (exclusive) [us].
     void activate(int x, int y, int p, int64 time, int64 expiry, float lifetime, const Vec2f& flow, int copies = 0);
@@ -154,7 +154,7 @@ private:
     // Per offset k: from an event's own bins to the first bins of the window of the pixel that sees it at k.
     std::vector<ptrdiff_t> voteOffsets_;
     std::vector<uchar> active_, nearest_;
-    std::vector<int64> time_;  // of the active event; NOT_ACTIVE where none is
+    std::vector<int64> time_;  // of the active event (eventTimeRow)
     std::vector<float> lifetime_;
     std::vector<Vec2f> flow_;
     std::vector<uchar> copies_;  // copiesAt()
