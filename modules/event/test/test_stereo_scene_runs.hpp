@@ -15,7 +15,7 @@ namespace opencv_test {
 // One COUPLED run over a simulated scene, per event: the outputs and the ground truth.
 struct SceneRun
 {
-    std::vector<float> disparity, confidence, truth;
+    std::vector<float> disparity, confidence, truth, lifetime, truthLifetime;
     std::vector<int> flags, truthFlags, camera;
     std::vector<uchar> horizontalEdge;  // the truth's normal flow is more vertical than horizontal
 };
@@ -27,15 +27,17 @@ inline SceneRun runScene(const std::string& scene, double ms, const std::functio
     configure(*m);
     SceneRun run;
     std::vector<Event> ev;
-    Mat gt, d, fl, conf;
+    Mat gt, d, lt, fl, conf;
     for (double t = 20000; t <= ms * 1000 + 1; t += 20000)
     {
         sim->generate(t, ev, gt);
-        m->process(ev, d, noArray(), fl, noArray(), noArray(), conf);
+        m->process(ev, d, lt, fl, noArray(), noArray(), conf);
         for (int i = 0; i < (int)ev.size(); i++)
         {
             run.disparity.push_back(d.at<float>(i));
             run.confidence.push_back(conf.at<float>(i));
+            run.lifetime.push_back(lt.at<float>(i));
+            run.truthLifetime.push_back(gt.at<float>(i, GT_LIFETIME));
             run.flags.push_back(fl.at<int>(i));
             run.truth.push_back(gt.at<float>(i, GT_DISPARITY));
             run.truthFlags.push_back((int)gt.at<float>(i, GT_FLAGS));

@@ -174,10 +174,11 @@ void StereoEventMatcherImpl::processAdmitted(const Event& e, Point r, int64 cold
         std::pair<float, Vec2f> matched;
         int copies = 0;
         // A lifetime copied back and forth between the sensors is never refitted while the edge changes speed
-        // (a swinging limb): past maxLifetimeCopies copies the event fits its own plane first.
+        // (a swinging limb): past maxLifetimeCopies copies the event fits its own plane first, as it does
+        // after a match less confident than lifetimeCopyConfidence_ (most often a wrong one).
         const bool haveMatch = est.disparity >= 0 && m.counterpartX >= 0
             && matchedLifetime(1 - c, m.counterpartX, r.y, p, s, matched.first, matched.second, copies);
-        if (haveMatch && copies < maxLifetimeCopies_)
+        if (haveMatch && copies < maxLifetimeCopies_ && !(m.confidence < lifetimeCopyConfidence_))
         {
             lifetimeCopies = copies + 1;
             if (m.confidence >= matchedLifetimeConfidence_)
@@ -197,7 +198,8 @@ void StereoEventMatcherImpl::processAdmitted(const Event& e, Point r, int64 cold
         }
         else if (haveMatch && m.confidence >= matchedLifetimeConfidence_)
         {
-            // Past the limit the event's own plane comes first; the match's lifetime only where it finds none.
+            // Past the limit, or after a less confident match, the event's own plane comes first; the match's
+            // lifetime only where it finds none.
             est.lifetime = refitMatchedEventInRows(estimator, re, matched, est.flow, status, s.lifetimes[c]);
             lifetimeCopies = copies + 1;
         }
@@ -708,6 +710,14 @@ void StereoEventMatcherImpl::setMatchedLifetimeConfidence(double c)
     matchedLifetimeConfidence_ = c;
 }
 
+void StereoEventMatcherImpl::setLifetimeCopyConfidence(double c)
+{
+    if (!(c >= 0 && c <= 1))
+        CV_Error_(Error::StsBadArg, ("StereoEventMatcher: lifetime copy confidence %g; must be 0..1 (0: every match "
+                                     "passes its lifetime on)", c));
+    lifetimeCopyConfidence_ = c;
+}
+
 void StereoEventMatcherImpl::setMaxLifetimeCopies(int copies)
 {
     if (copies < 0 || copies > 255)
@@ -783,7 +793,7 @@ void StereoEventMatcherImpl::write(FileStorage& fs) const
        << "maxVectorLength" << maxVectorLength_ << "costWindow" << costWindow_ << "lifetimeWindow" << lifetimeWindow_
        << "aggregationWindow" << aggregationWindow_ << "uniquenessRatio" << uniquenessRatio_
        << "minConfidence" << minConfidence_ << "matchedLifetimeConfidence" << matchedLifetimeConfidence_
-       << "maxLifetimeCopies" << maxLifetimeCopies_
+       << "lifetimeCopyConfidence" << lifetimeCopyConfidence_ << "maxLifetimeCopies" << maxLifetimeCopies_
        << "priorTolerance" << priorTolerance_ << "recencyWeight" << recencyWeight_ << "recencyTime" << (double)recencyTime_
        << "lookAhead" << (double)lookAhead_ << "fixedInterval" << (double)fixedInterval_
        << "frameWindow" << (double)frameWindow_ << "maxLifetime" << (double)maxLifetime_ << "activeDistance"
@@ -822,6 +832,7 @@ void StereoEventMatcherImpl::read(const FileNode& fn)
     setUniquenessRatio((int)num("uniquenessRatio", uniquenessRatio_));
     setMinConfidence(num("minConfidence", minConfidence_));
     setMatchedLifetimeConfidence(num("matchedLifetimeConfidence", matchedLifetimeConfidence_));
+    setLifetimeCopyConfidence(num("lifetimeCopyConfidence", lifetimeCopyConfidence_));
     setMaxLifetimeCopies((int)num("maxLifetimeCopies", maxLifetimeCopies_));
     setPriorTolerance((int)num("priorTolerance", priorTolerance_));
     setRecencyWeight((int)num("recencyWeight", recencyWeight_));

@@ -122,6 +122,8 @@ public:
     void setMaxLifetimeCopies(int copies) CV_OVERRIDE;
 
     void setMatchedLifetimeConfidence(double c) CV_OVERRIDE;
+    double getLifetimeCopyConfidence() const CV_OVERRIDE { return lifetimeCopyConfidence_; }
+    void setLifetimeCopyConfidence(double c) CV_OVERRIDE;
     int getPriorTolerance() const CV_OVERRIDE { return priorTolerance_; }
 
     void setPriorTolerance(int percent) CV_OVERRIDE;
@@ -304,7 +306,7 @@ private:
     int uniquenessRatio_ = 15;
     int64 fixedInterval_ = 10000, frameWindow_ = 33000, maxLifetime_ = 100000, noiseActiveTime_ = 25000;
     double activeDistance_ = 2.5;
-    double minConfidence_ = 0, matchedLifetimeConfidence_ = 0.15;
+    double minConfidence_ = 0, matchedLifetimeConfidence_ = 0.15, lifetimeCopyConfidence_ = 0.3;
     int maxLifetimeCopies_ = 1;
     int priorTolerance_ = 30;
     int recencyWeight_ = 15;

@@ -125,9 +125,10 @@ neighbours in turn, so that an object's disparity reaches the image's edge from 
 - COUPLED: the event is matched first; on a match its lifetime is the median lifetime of the active events
   of its polarity in the other sensor's window of getLifetimeWindow() (9) around the counterpart, and its
   plane is not fitted; otherwise the LifetimeEstimator of its sensor fits one (or classifies it as noise).
-  After a match less confident than getMatchedLifetimeConfidence() the plane is fitted as well, and the
-  event takes the match's lifetime only when its plane says it is not noise. A lifetime already passed
-  getMaxLifetimeCopies() times between the sensors is not passed on while the event's own fit finds a plane.
+  After a match less confident than getLifetimeCopyConfidence(), or one whose lifetime was already passed
+  getMaxLifetimeCopies() times between the sensors, the event's own plane comes first, and it takes the
+  match's lifetime only where its fit finds none (from getMatchedLifetimeConfidence() up; below that it is
+  noise).
 - DECOUPLED: the LifetimeEstimator runs for every event, then the event is matched.
 - FIXED_INTERVAL: every event is active for getFixedInterval() microseconds; no lifetimes.
 - FRAME_SGBM: per time window (getFrameWindow(), aligned to multiples of it), each sensor's events are
@@ -236,13 +237,25 @@ public:
     disparity, STEREO_AMBIGUOUS (default 0: every event keeps its best estimate). */
     CV_WRAP virtual double getMinConfidence() const = 0;
     CV_WRAP virtual void setMinConfidence(double confidence) = 0;
-    /** @brief COUPLED: the confidence a match needs for the event to take its lifetime from the other
-    sensor's window around the counterpart at once (0..1, default 0.15). After a less confident one the
-    event's own plane fit decides whether it is noise, and only if it is not does it take the match's
-    lifetime: every event keeps its best disparity, and noise finds some candidate. 0: every match passes its
-    lifetime on (more lifetimes, less noise found). */
+    /** @brief COUPLED: the confidence below which a match says nothing about whether the event is signal
+    (0..1, default 0.15): every event keeps its best disparity, and noise finds some candidate. After a less
+    confident match, an event whose own plane fit finds no plane is noise; from it up to
+    getLifetimeCopyConfidence() it takes the match's lifetime instead. Where getLifetimeCopyConfidence() is
+    lower, a match between the two passes its lifetime on once the event's own plane says it is not noise.
+    0 (with getLifetimeCopyConfidence() 0): every match passes its lifetime on (more lifetimes, less noise
+    found). */
     CV_WRAP virtual double getMatchedLifetimeConfidence() const = 0;
     CV_WRAP virtual void setMatchedLifetimeConfidence(double confidence) = 0;
+    /** @brief COUPLED: the confidence from which a match passes its lifetime on in place of the event's own
+    plane (0..1, default 0.3). Below it the event fits its own plane first (or takes its prediction), and
+    takes the match's lifetime only where it finds none, from getMatchedLifetimeConfidence() up; below both
+    the event is noise without a plane. The less confident matches are the wrong ones most often, and what a
+    match passes on (lifetime, flow, copy count) sets how long the event stays active and what the matches
+    around it copy next: with 0.3, fewer wrong matches follow on scenes where one object passes in front of
+    another (doc/benchmarks.md). 0: every match passes its lifetime on, as published (with the noise check
+    below getMatchedLifetimeConfidence()). */
+    CV_WRAP virtual double getLifetimeCopyConfidence() const = 0;
+    CV_WRAP virtual void setLifetimeCopyConfidence(double confidence) = 0;
     /** @brief COUPLED: how many times a lifetime may be passed between the sensors by matches before an event
     fits its own plane again (0..255; default 1; 255: no limit, as published; 0: every event fits first).
     Both sensors' matched events copy each other's lifetimes, so without a limit a lifetime can go round for
