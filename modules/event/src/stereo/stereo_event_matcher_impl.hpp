@@ -264,13 +264,12 @@ private:
     const unsigned* scoreSeenColumns(const ZouDescriptorMap& self, int sign, Point r, int h, int& columnsAt,
                                      MatchScratch& s) const;
 
-    // The temporal prior's decision for an event (polarity p) without a unique winner at the largest window
-    // (best cost bestCost, the candidates' scores in score): false when it has none; otherwise the chosen
-    // candidate in m.
-    // Its neighbourhood: PRIOR_RADIUS rows above and below, and PRIOR_RADIUS columns to each side, or
-    // PRIOR_ROW_REACH on a horizontal edge (priorColumnReach).
+    // The temporal prior's decision for an event (polarity p) without a unique winner (best cost bestCost, the
+    // candidates' scores in score): false when it has none; otherwise the chosen candidate in m.
+    // Its neighbourhood: PRIOR_RADIUS rows above and below, and `columns` (priorColumnReach) to each side:
+    // PRIOR_RADIUS, or PRIOR_ROW_REACH on a horizontal edge.
     enum { PRIOR_RADIUS = 5, PRIOR_ROW_REACH = 30, PRIOR_SUPPORT = 3 };
-    bool decideByPrior(int c, Point r, int p, int64 t, const unsigned* score, unsigned bestCost, MatchScratch& s,
+    bool decideByPrior(int c, Point r, int p, int64 t, int columns, const unsigned* score, unsigned bestCost, MatchScratch& s,
                        MatchResult& m) const;
     // How far along the row the temporal prior looks for the event at r of sensor c.
     int priorColumnReach(int c, Point r) const;

@@ -109,8 +109,10 @@ without a unique winner (repeated or row-parallel structure), the median dispari
 active estimates within 5 pixels (at least 3 of them) is the prior: the cheapest candidate within a pixel of
 it wins when its cost is within getPriorTolerance() % of the best's. On a horizontal edge (the active events
 around the event move more vertically than horizontally) the estimates are taken 30 pixels to each side
-along the row, 5 up and down: there only the edge's ends tell the candidates apart. Its confidence is then
-the share of those estimates within a pixel of the prior (0 when the left-right check contradicts it).
+along the row, 5 up and down: there only the edge's ends tell the candidates apart, so growing the window
+seldom decides, and the prior is tried as soon as the first window (W x W) leaves the event ambiguous. Its
+confidence is then the share of those estimates within a pixel of the prior (0 when the left-right check
+contradicts it).
 
 **Past the other camera's view.** The left camera sees the first max-disparity columns of a near object
 that the right camera does not (the right camera likewise its last ones): such an event has no counterpart
