@@ -325,7 +325,7 @@ TEST(StereoEventMatcher, coupled_lifetimes_are_refitted_after_a_copy_on_changing
     // goes round while the limbs speed up and slow down, and drifts upwards (the median over the other
     // sensor's active events favours long lifetimes, whose events stay active longer). With one copy (the
     // default) the events past it fit their own planes. Measured: walking 9.7 % against 41.6 % without a
-    // limit; walking_near (the same walk at half the distance) 7.9 % against 67.2 %.
+    // limit; walking_near (the same walk at half the distance) 8.1 % against 67.2 %.
     for (const char* scene : { "walking", "walking_near" })
     {
         const double limited = coupledLifetimeError(scene, false), unlimited = coupledLifetimeError(scene, true);
@@ -368,7 +368,7 @@ TEST(StereoEventMatcher, coupled_lifetimes_passed_on_without_limit_keep_the_star
 
 // The walking figure at 1.5 m (walking_near: limbs 1 px nearer and further than the body, ragged low-contrast
 // clothes, a less sensitive right camera): COUPLED's matching rate (here over the non-occluded signal events
-// of both cameras) at least 85 % and 10 points above frames + SGBM's. Measured over 495 ms: 93.6 against
+// of both cameras) at least 85 % and 10 points above frames + SGBM's. Measured over 495 ms: 93.8 against
 // 68.7 %.
 TEST(StereoEventMatcher, coupled_leads_frame_sgbm_by_ten_points_on_the_near_walker)
 {
