@@ -127,8 +127,8 @@ static int64 wrongBelow(const SceneRun& r, double below)
 {
     int64 wrong = 0;
     for (size_t i = 0; i < r.flags.size(); i++)
-        if (r.camera[i] == CAMERA_LEFT && !(r.truthFlags[i] & GT_FLAG_NOISE) && r.confidence[i] < below)
-            wrong += !(r.disparity[i] > 0 && std::abs(r.disparity[i] - r.truth[i]) <= 1);
+        if (isLeftSignal(r, i) && r.confidence[i] < below)
+            wrong += !matchedWithin1(r, i);
     return wrong;
 }
 

@@ -65,17 +65,28 @@ inline std::vector<StereoEventEstimate> estimatesOf(const Mat& disparity, const 
     return estimates;
 }
 
+// Event i is a left signal event: one of those the matching rate counts.
+inline bool isLeftSignal(const SceneRun& r, size_t i)
+{
+    return r.camera[i] == CAMERA_LEFT && !(r.truthFlags[i] & GT_FLAG_NOISE);
+}
+
+// Event i has a disparity within 1 px of the truth.
+inline bool matchedWithin1(const SceneRun& r, size_t i)
+{
+    return r.disparity[i] > 0 && std::abs(r.disparity[i] - r.truth[i]) <= 1;
+}
+
 // Left signal events within 1 px of the truth, over all left signal events [%]; onlyHorizontalEdges: over
 // those on horizontal edges.
 inline double matchingRate(const SceneRun& r, bool onlyHorizontalEdges = false)
 {
     int64 all = 0, matched = 0;
     for (size_t i = 0; i < r.disparity.size(); i++)
-        if (r.camera[i] == CAMERA_LEFT && !(r.truthFlags[i] & GT_FLAG_NOISE)
-            && (!onlyHorizontalEdges || r.horizontalEdge[i]))
+        if (isLeftSignal(r, i) && (!onlyHorizontalEdges || r.horizontalEdge[i]))
         {
             all++;
-            matched += r.disparity[i] > 0 && std::abs(r.disparity[i] - r.truth[i]) <= 1;
+            matched += matchedWithin1(r, i);
         }
     return 100.0 * (double)matched / (double)std::max<int64>(1, all);
 }

@@ -266,7 +266,7 @@ MatchResult StereoEventMatcherImpl::match(int c, Point r, int p, int64 t, MatchS
         // Not unique: the temporal prior may decide between the near-equals at the largest window, and on a
         // horizontal edge already at the first one. Along such an edge the candidates on the other sensor's copy
         // of it cost about the same at every window size (only the edge's ends, far away, tell them apart), so
-        // growing the window seldom decides, and it is most of the time such events take.
+        // growing the window seldom decides, while it costs such an event several times a first window's work.
         if (!unique && priorTolerance_ > 0 && (last || h == costWindow_ / 2))
         {
             const int columns = priorColumnReach(c, r);
@@ -344,9 +344,9 @@ void StereoEventMatcherImpl::recencyShares(const ZouDescriptorMap& other, const 
 }
 
 // The temporal prior (see match()): this sensor's still active estimates within PRIOR_RADIUS rows and `columns`
-// columns of r, at least PRIOR_SUPPORT of them. Their median is the prior; the cheapest candidate within a pixel of it wins when
-// its cost is within priorTolerance_ % of the best's, with the share of those estimates that agree with the
-// median within a pixel as its confidence. Edges move across the sensor a pixel at a time: what their events
+// columns of r, at least PRIOR_SUPPORT of them. Their median is the prior; the cheapest candidate within a pixel
+// of it wins when its cost is within priorTolerance_ % of the best's, with the share of those estimates that
+// agree with the median within a pixel as its confidence. Edges move across the sensor a pixel at a time: what their events
 // were matched to a moment ago, nearby, is most often what the next one should be matched to.
 bool StereoEventMatcherImpl::decideByPrior(int c, Point r, int p, int64 t, int columns, const unsigned* score, unsigned bestCost, MatchScratch& s,
                                            MatchResult& m) const
