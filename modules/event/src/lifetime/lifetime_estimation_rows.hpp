@@ -14,17 +14,15 @@ namespace cv {
 namespace event {
 namespace detail {
 
-/** A past event of the plane fit's window, relative to the current event: px, px, ms. */
-struct SurfacePoint
-{
-    double x, y, t;
-};
-
-/** The working memory of one thread of LifetimeEstimator calls: RANSAC's point list and the status counts
-of the events it processed (added to the estimator's own by addStatusCounts). */
+/** The working memory of one thread of LifetimeEstimator calls: the plane fit's points and RANSAC's hypotheses,
+and the status counts of the events it processed (added to the estimator's own by addStatusCounts). */
 struct LifetimeScratch
 {
-    std::vector<SurfacePoint> points;
+    // The past events of the fit's window relative to the current event (px, px, ms), one array per coordinate.
+    std::vector<double> x, y, t;
+    // The hypotheses' planes t = a x + b y, inlier thresholds [ms] and inlier counts.
+    std::vector<double> a, b, threshold;
+    std::vector<int> inliers;
     double counts[4] = { 0, 0, 0, 0 };
 };
 
@@ -37,9 +35,20 @@ if it is not, it takes `matched` (the lifetime and flow of its match) instead of
 LIFETIME_MATCHED. */
 float processMatchedEventInRows(LifetimeEstimator& estimator, const Event& e, const std::pair<float, Vec2f>& matched,
                                 Vec2f& flow, int& status, LifetimeScratch& scratch);
-/** processEventInRows for a matched event whose match's lifetime has been copied too often: its own plane first;
-where the fit finds none, it takes `matched` instead, counted as LIFETIME_MATCHED. */
-float refitMatchedEventInRows(LifetimeEstimator& estimator, const Event& e, const std::pair<float, Vec2f>& matched,
+/** A stereo match's lifetime and flow, asked for only when needed (a matched window's median costs a gather and
+a selection). */
+class MatchedLifetimeSource
+{
+public:
+    /** The match's lifetime and flow; false when the match has none to give. */
+    virtual bool get(std::pair<float, Vec2f>& matched) = 0;
+protected:
+    ~MatchedLifetimeSource() {}
+};
+/** processEventInRows for a matched event that fits its own plane first (its match's lifetime was copied too
+often, or the match is not confident enough to pass it on): where the fit finds no plane, it asks `matched` and
+takes what that gives, counted as LIFETIME_MATCHED (noise when it gives nothing). */
+float refitMatchedEventInRows(LifetimeEstimator& estimator, const Event& e, MatchedLifetimeSource& matched,
                               Vec2f& flow, int& status, LifetimeScratch& scratch);
 void insertEventInRows(LifetimeEstimator& estimator, const Event& e, float lifetime, const Vec2f& flow,
                        LifetimeScratch& scratch);

@@ -8,6 +8,7 @@
 #include "precomp.hpp"
 #include "lifetime/lifetime_estimation_rows.hpp"
 #include "lifetime/neighbour_along_motion.hpp"
+#include "lifetime/plane_inliers.hpp"
 #include "common/timestamp_math.hpp"
 
 #include <Eigen/Dense>
@@ -78,12 +79,13 @@ public:
     float processMatchedEvent(const Event& e, const std::pair<float, Vec2f>& matched, Vec2f& flow, int& status,
                               LifetimeScratch& scratch)
     {
-        return estimate(e, &matched, true, flow, status, scratch);
+        GivenMatch given(matched);
+        return estimate(e, &given, true, flow, status, scratch);
     }
 
-    // processEvent, except that an event whose plane says it is noise takes `matched` instead, counted as
-    // LIFETIME_MATCHED.
-    float refitMatchedEvent(const Event& e, const std::pair<float, Vec2f>& matched, Vec2f& flow, int& status,
+    // processEvent, except that an event whose plane says it is noise takes what `matched` gives instead,
+    // counted as LIFETIME_MATCHED.
+    float refitMatchedEvent(const Event& e, MatchedLifetimeSource& matched, Vec2f& flow, int& status,
                             LifetimeScratch& scratch)
     {
         return estimate(e, &matched, false, flow, status, scratch);
@@ -236,9 +238,23 @@ public:
     String getDefaultName() const CV_OVERRIDE { return "LifetimeEstimator"; }
 
 private:
-    // processEvent(), or, when `matched` is given, processMatchedEvent() (`matchedNeedsPlane`: the event takes
-    // it when its plane says it is no noise) or refitMatchedEvent() (when its plane says it is).
-    float estimate(const Event& e, const std::pair<float, Vec2f>* matched, bool matchedNeedsPlane, Vec2f& flow,
+    // A match's lifetime known before the fit.
+    class GivenMatch CV_FINAL : public MatchedLifetimeSource
+    {
+    public:
+        explicit GivenMatch(const std::pair<float, Vec2f>& matched) : matched_(matched) {}
+        bool get(std::pair<float, Vec2f>& matched) CV_OVERRIDE
+        {
+            matched = matched_;
+            return true;
+        }
+    private:
+        const std::pair<float, Vec2f>& matched_;
+    };
+
+    // processEvent(), or, when `source` is given, processMatchedEvent() (`matchedNeedsPlane`: the event takes
+    // the match's lifetime when its plane says it is no noise) or refitMatchedEvent() (when its plane says it is).
+    float estimate(const Event& e, MatchedLifetimeSource* source, bool matchedNeedsPlane, Vec2f& flow,
                    int& status, LifetimeScratch& scratch)
     {
         checkInside(e);
@@ -253,7 +269,7 @@ private:
             b = pred.b;
             status = LIFETIME_PREDICTED;
         }
-        else if (fit(e, p, pred, scratch.points, a, b))
+        else if (fit(e, p, pred, scratch, a, b))
             status = LIFETIME_FITTED;
         pred.valid = false;  // consumed (or stale)
         surface_[idx] = e.t;
@@ -262,10 +278,11 @@ private:
         flow = Vec2f(0, 0);
         const double g2 = a * a + b * b;
         const bool plane = status != LIFETIME_NOISE && g2 > 1e-12;
-        if (matched && plane == matchedNeedsPlane)
+        std::pair<float, Vec2f> matched;
+        if (source && plane == matchedNeedsPlane && source->get(matched))
         {
-            lifetime = matched->first;
-            flow = matched->second;
+            lifetime = matched.first;
+            flow = matched.second;
             status = LIFETIME_MATCHED;
             predictFromFlow(e, p, lifetime, flow);
         }
@@ -332,10 +349,20 @@ private:
     }
 
     // RANSAC + refit. On success, (a, b) is the time-surface gradient [ms/px].
-    bool fit(const Event& e, int p, const Prediction& pred, std::vector<SurfacePoint>& points, double& a, double& b)
+    bool fit(const Event& e, int p, const Prediction& pred, LifetimeScratch& scratch, double& a, double& b)
     {
         const int r = window_ / 2;
-        points.clear();
+        const size_t capacity = (size_t)window_ * window_;
+        if (scratch.x.size() < capacity)
+        {
+            scratch.x.resize(capacity);
+            scratch.y.resize(capacity);
+            scratch.t.resize(capacity);
+        }
+        double* const px = scratch.x.data();
+        double* const py = scratch.y.data();
+        double* const pt = scratch.t.data();
+        int m = 0;
         const int64 oldest = timeBefore(e.t, (int64)timeWindow_);
         for (int dy = -r; dy <= r; dy++)
         {
@@ -351,60 +378,85 @@ private:
                 const int64 ts = row[x];
                 if (ts == EventSurface::NO_EVENT || ts < oldest || ts > e.t)
                     continue;
-                points.push_back(SurfacePoint{ (double)dx, (double)dy, (double)(ts - e.t) * 1e-3 });
+                px[m] = (double)dx;
+                py[m] = (double)dy;
+                pt[m] = (double)(ts - e.t) * 1e-3;
+                m++;
             }
         }
-        const int m = (int)points.size();
         if (m + 1 < minInliers_ || m < 2)
             return false;
 
-        // The samples depend on the seed and the event alone, not on how many fits ran before: the same
-        // results whatever the order of calls for events in distant rows (StereoEventMatcher's row bands).
+        // The hypotheses first, then their inliers counted together (plane_inliers.hpp). The samples depend on
+        // the seed and the event alone, not on how many fits ran before: the same results whatever the order of
+        // calls for events in distant rows (StereoEventMatcher's row bands).
+        const size_t slots = alignSize(maxIterations_, (int)PLANE_HYPOTHESES_PAD);
+        if (scratch.a.size() < slots)
+        {
+            scratch.a.assign(slots, 0.0);
+            scratch.b.assign(slots, 0.0);
+            scratch.threshold.assign(slots, 0.0);
+            scratch.inliers.assign(slots, 0);
+        }
         RNG rng(sampleSeed(e, p));
-        int bestCount = 0;
-        double bestA = 0, bestB = 0, bestThreshold = inlierThreshold_;
+        int n = 0;
         for (int it = 0; it < maxIterations_; it++)
         {
             const int i = rng.uniform(0, m);
             int j = rng.uniform(0, m - 1);
             if (j >= i)
                 j++;
-            const SurfacePoint& p1 = points[i];
-            const SurfacePoint& p2 = points[j];
             // Plane t = a x + b y through the current event (origin) and the two samples.
-            const double det = p1.x * p2.y - p2.x * p1.y;
+            const double det = px[i] * py[j] - px[j] * py[i];
             if (std::abs(det) < 1e-9)
                 continue;  // collinear with the current event: degenerate
-            const double ha = (p1.t * p2.y - p2.t * p1.y) / det;
-            const double hb = (p1.x * p2.t - p2.x * p1.t) / det;
-            const double threshold = inlierThreshold(ha, hb);
-            int count = 1;  // the current event lies on every hypothesis
-            for (const SurfacePoint& q : points)
-                count += std::abs(ha * q.x + hb * q.y - q.t) <= threshold;
+            const double ha = (pt[i] * py[j] - pt[j] * py[i]) / det;
+            const double hb = (px[i] * pt[j] - px[j] * pt[i]) / det;
+            scratch.a[(size_t)n] = ha;
+            scratch.b[(size_t)n] = hb;
+            scratch.threshold[(size_t)n] = inlierThreshold(ha, hb);
+            n++;
+        }
+        inlierKernels_.count(px, py, pt, m, scratch.a.data(), scratch.b.data(), scratch.threshold.data(), n,
+                             scratch.inliers.data());
+        int bestCount = 0;
+        double bestA = 0, bestB = 0, bestThreshold = inlierThreshold_;
+        for (int k = 0; k < n; k++)
+        {
+            const int count = 1 + scratch.inliers[(size_t)k];  // the current event lies on every hypothesis
             if (count > bestCount)
             {
                 bestCount = count;
-                bestThreshold = threshold;
-                bestA = ha;
-                bestB = hb;
+                bestThreshold = scratch.threshold[(size_t)k];
+                bestA = scratch.a[(size_t)k];
+                bestB = scratch.b[(size_t)k];
             }
         }
         if (bestCount < minInliers_)
             return false;
 
-        // Least squares t = a x + b y + c over the inliers and the current event, pulled toward the plane
-        // predicted for this pixel when one exists (ridge on a, b).
-        Eigen::Matrix3d ata = Eigen::Matrix3d::Zero();
-        Eigen::Vector3d atb = Eigen::Vector3d::Zero();
-        auto add = [&](double x, double y, double t) {
-            const Eigen::Vector3d row(x, y, 1.0);
-            ata += row * row.transpose();
-            atb += row * t;
-        };
-        add(0, 0, 0);
-        for (const SurfacePoint& q : points)
-            if (std::abs(bestA * q.x + bestB * q.y - q.t) <= bestThreshold)
-                add(q.x, q.y, q.t);
+        // Least squares t = a x + b y + c over the inliers and the current event (the origin), pulled toward the
+        // plane predicted for this pixel when one exists (ridge on a, b). The normal equations' sums, each
+        // added up in the points' order.
+        double sxx = 0, sxy = 0, sx = 0, syy = 0, sy = 0, sxt = 0, syt = 0, st = 0;
+        int count = 1;
+        for (int i = 0; i < m; i++)
+            if (std::abs(bestA * px[i] + bestB * py[i] - pt[i]) <= bestThreshold)
+            {
+                const double x = px[i], y = py[i], t = pt[i];
+                sxx += x * x;
+                sxy += x * y;
+                sx += x;
+                syy += y * y;
+                sy += y;
+                sxt += x * t;
+                syt += y * t;
+                st += t;
+                count++;
+            }
+        Eigen::Matrix3d ata;
+        ata << sxx, sxy, sx, sxy, syy, sy, sx, sy, (double)count;
+        Eigen::Vector3d atb(sxt, syt, st);
         if (pred.valid && lambda_ > 0)
         {
             ata(0, 0) += lambda_;
@@ -464,6 +516,7 @@ private:
     double predictionTolerance_ = 1000;
     bool usePrediction_ = true;
     int seed_ = 0;
+    const PlaneInlierKernels& inlierKernels_ = planeInlierKernelsForThisCpu();
     std::vector<int64> surface_;
     std::vector<Prediction> predictions_;
     std::vector<Active> active_;
@@ -477,7 +530,7 @@ float processEventInRows(LifetimeEstimator& estimator, const Event& e, Vec2f& fl
     return static_cast<LifetimeEstimatorImpl&>(estimator).processEvent(e, flow, status, scratch);
 }
 
-float refitMatchedEventInRows(LifetimeEstimator& estimator, const Event& e, const std::pair<float, Vec2f>& matched,
+float refitMatchedEventInRows(LifetimeEstimator& estimator, const Event& e, MatchedLifetimeSource& matched,
                               Vec2f& flow, int& status, LifetimeScratch& scratch)
 {
     return static_cast<LifetimeEstimatorImpl&>(estimator).refitMatchedEvent(e, matched, flow, status, scratch);

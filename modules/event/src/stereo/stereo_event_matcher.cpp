@@ -171,37 +171,49 @@ void StereoEventMatcherImpl::processAdmitted(const Event& e, Point r, int64 cold
     if (mode_ == STEREO_COUPLED)
     {
         const LifetimeTimer timer(timeLifetimes_, s.lifetimeTicks);
-        std::pair<float, Vec2f> matched;
-        int copies = 0;
-        // A lifetime copied back and forth between the sensors is never refitted while the edge changes speed
-        // (a swinging limb): past maxLifetimeCopies copies the event fits its own plane first, as it does
-        // after a match less confident than lifetimeCopyConfidence_ (most often a wrong one).
-        const bool haveMatch = est.disparity >= 0 && m.counterpartX >= 0
-            && matchedLifetime(1 - c, m.counterpartX, r.y, p, s, matched.first, matched.second, copies);
-        if (haveMatch && copies < maxLifetimeCopies_ && !(m.confidence < lifetimeCopyConfidence_))
+        // The other sensor's matched window, whose median is taken only where it is used.
+        MatchedWindow window(*this, 1 - c, m.counterpartX, r.y, p, s);
+        const bool matchable = est.disparity >= 0 && m.counterpartX >= 0;
+        if (matchable && !(m.confidence < lifetimeCopyConfidence_))
         {
-            lifetimeCopies = copies + 1;
-            if (m.confidence >= matchedLifetimeConfidence_)
+            // A lifetime copied back and forth between the sensors is never refitted while the edge changes
+            // speed (a swinging limb): past maxLifetimeCopies copies the event fits its own plane first, as it
+            // does after a match less confident than lifetimeCopyConfidence_ (most often a wrong one).
+            std::pair<float, Vec2f> matched;
+            const bool haveMatch = window.get(matched);
+            if (haveMatch && window.copies < maxLifetimeCopies_)
             {
-                est.lifetime = matched.first;
-                est.flow = matched.second;
-                insertEventInRows(estimator, re, est.lifetime, est.flow, s.lifetimes[c]);
-                status = LIFETIME_MATCHED;
+                lifetimeCopies = window.copies + 1;
+                if (m.confidence >= matchedLifetimeConfidence_)
+                {
+                    est.lifetime = matched.first;
+                    est.flow = matched.second;
+                    insertEventInRows(estimator, re, est.lifetime, est.flow, s.lifetimes[c]);
+                    status = LIFETIME_MATCHED;
+                }
+                else
+                {
+                    // Every event keeps its best disparity, noise included, and noise finds some candidate: below
+                    // matchedLifetimeConfidence_ the event's own plane says whether it is noise before it takes
+                    // the match's lifetime.
+                    est.lifetime = processMatchedEventInRows(estimator, re, matched, est.flow, status, s.lifetimes[c]);
+                }
+            }
+            else if (haveMatch && m.confidence >= matchedLifetimeConfidence_)
+            {
+                // Past the limit the event's own plane comes first; the match's lifetime only where it finds none.
+                est.lifetime = refitMatchedEventInRows(estimator, re, window, est.flow, status, s.lifetimes[c]);
+                lifetimeCopies = window.copies + 1;
             }
             else
-            {
-                // Every event keeps its best disparity, noise included, and noise finds some candidate: below
-                // matchedLifetimeConfidence_ the event's own plane says whether it is noise before it takes
-                // the match's lifetime.
-                est.lifetime = processMatchedEventInRows(estimator, re, matched, est.flow, status, s.lifetimes[c]);
-            }
+                est.lifetime = processEventInRows(estimator, re, est.flow, status, s.lifetimes[c]);
         }
-        else if (haveMatch && m.confidence >= matchedLifetimeConfidence_)
+        else if (matchable && m.confidence >= matchedLifetimeConfidence_)
         {
-            // Past the limit, or after a less confident match, the event's own plane comes first; the match's
-            // lifetime only where it finds none.
-            est.lifetime = refitMatchedEventInRows(estimator, re, matched, est.flow, status, s.lifetimes[c]);
-            lifetimeCopies = copies + 1;
+            // A match less confident than lifetimeCopyConfidence_: the event's own plane first, and only where
+            // it finds none the matched window's median (none there: noise).
+            est.lifetime = refitMatchedEventInRows(estimator, re, window, est.flow, status, s.lifetimes[c]);
+            lifetimeCopies = window.copies + 1;
         }
         else
             est.lifetime = processEventInRows(estimator, re, est.flow, status, s.lifetimes[c]);

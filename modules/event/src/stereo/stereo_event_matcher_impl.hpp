@@ -292,6 +292,32 @@ private:
     // around (x, y) of sensor c. False when none has a lifetime.
     // `copies`: how many times that lifetime was copied between the sensors since a plane fit gave it.
     bool matchedLifetime(int c, int x, int y, int p, MatchScratch& s, float& lifetime, Vec2f& flow, int& copies) const;
+    // COUPLED: matchedLifetime of one event's counterpart, taken on the first get() and kept; `copies` is valid
+    // after a get() that found one.
+    class MatchedWindow CV_FINAL : public MatchedLifetimeSource
+    {
+    public:
+        MatchedWindow(const StereoEventMatcherImpl& matcher, int c, int x, int y, int p, MatchScratch& s)
+            : matcher_(matcher), c_(c), x_(x), y_(y), p_(p), s_(s)
+        {
+        }
+        bool get(std::pair<float, Vec2f>& matched) CV_OVERRIDE
+        {
+            if (state_ == UNKNOWN)
+                state_ = matcher_.matchedLifetime(c_, x_, y_, p_, s_, matched_.first, matched_.second, copies) ? FOUND
+                                                                                                             : NONE;
+            matched = matched_;
+            return state_ == FOUND;
+        }
+        int copies = 0;
+    private:
+        enum { UNKNOWN, FOUND, NONE };
+        const StereoEventMatcherImpl& matcher_;
+        const int c_, x_, y_, p_;
+        MatchScratch& s_;
+        int state_ = UNKNOWN;
+        std::pair<float, Vec2f> matched_;
+    };
     // COUPLED: starts loading what matchedLifetime(c, x, y, p) will read, so that the left-right check overlaps
     // its cache misses (the other sensor's lifetimes are seldom cached).
     void prefetchMatchedWindow(int c, int x, int y, int p) const;
