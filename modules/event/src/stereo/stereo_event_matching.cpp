@@ -206,6 +206,7 @@ MatchResult StereoEventMatcherImpl::match(int c, Point r, int p, int64 t, MatchS
     int h = costWindow_ / 2;
     unsigned mass = addRect(self, other, r, -h, h, -h, h, s);
     int columnsAt = -1;
+    int priorColumns = -1;  // priorColumnReach(c, r), read once: the flows it reads do not change during match()
     if (recencyWeight_ > 0)
         recencyShares(other, recencyColumns, sign, r, p, t, s);
     for (;;)
@@ -269,8 +270,10 @@ MatchResult StereoEventMatcherImpl::match(int c, Point r, int p, int64 t, MatchS
         // growing the window seldom decides, while it costs such an event several times a first window's work.
         if (!unique && priorTolerance_ > 0 && (last || h == costWindow_ / 2))
         {
-            const int columns = priorColumnReach(c, r);
-            if ((last || columns == (int)PRIOR_ROW_REACH) && decideByPrior(c, r, p, t, columns, score, bestCost, s, m))
+            if (priorColumns < 0)
+                priorColumns = priorColumnReach(c, r);
+            if ((last || priorColumns == (int)PRIOR_ROW_REACH)
+                && decideByPrior(c, r, p, t, priorColumns, score, bestCost, s, m))
                 return m;
         }
         // The aggregation stops when the winner beats every alternative by the uniqueness margin, or at the
