@@ -61,6 +61,12 @@ function(opencv_event_configure_library target)
   set_target_properties(${target} PROPERTIES CXX_STANDARD 17 CXX_STANDARD_REQUIRED ON CXX_EXTENSIONS OFF)
   target_include_directories(${target} PRIVATE "${OPENCV_EVENT_MODULE_DIR}/src")
   target_link_libraries(${target} PRIVATE Eigen3::Eigen)
+  # A multiply followed by an add stays two roundings, as written, in every instruction set's copy: the plane
+  # fit's vector kernels (AVX2, AVX-512 fuse them otherwise) then count exactly the scalar code's inliers, and
+  # the lifetimes do not depend on the CPU.
+  if(CMAKE_CXX_COMPILER_ID MATCHES "GNU|Clang")
+    target_compile_options(${target} PRIVATE -ffp-contract=off)
+  endif()
   foreach(dep LIBUSB LZ4 ZSTD SQLITE3)
     if(OPENCV_EVENT_${dep}_FOUND)
       target_link_libraries(${target} PRIVATE PkgConfig::OPENCV_EVENT_${dep})

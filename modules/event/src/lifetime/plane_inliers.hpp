@@ -18,9 +18,9 @@ once per instruction set (plane_inliers.simd.hpp) and chosen at run time like th
 threshold[k], into counts[k]. The points are the window's past events relative to the current one (px, px, ms),
 one array per coordinate; a, b, threshold and counts hold n rounded up to PLANE_HYPOTHESES_PAD entries (the
 ones past n are read and written, their values unspecified). The vector versions score several hypotheses at
-once, one per lane, over the points; each lane does the scalar version's arithmetic in double precision, so the
-counts are the scalar ones' except where the instruction set fuses the multiply and add (AVX2, AVX-512) and a
-point lies within a rounding error of the threshold. (Internal; exported for the tests.) */
+once, one per lane, over the points; each lane does the scalar version's arithmetic in double precision, in its
+order and with its roundings (the module is compiled without fused multiply-adds), so every version gives the
+same counts. (Internal; exported for the tests.) */
 enum { PLANE_HYPOTHESES_PAD = 8 };
 
 typedef void (*PlaneInlierCountFn)(const double* x, const double* y, const double* t, int m, const double* a,
