@@ -174,44 +174,33 @@ void StereoEventMatcherImpl::processAdmitted(const Event& e, Point r, int64 cold
         // The other sensor's matched window, whose median is taken only where it is used.
         MatchedWindow window(*this, 1 - c, m.counterpartX, r.y, p, s);
         const bool matchable = est.disparity >= 0 && m.counterpartX >= 0;
-        if (matchable && !(m.confidence < lifetimeCopyConfidence_))
+        // A lifetime copied back and forth between the sensors is never refitted while the edge changes speed (a
+        // swinging limb): past maxLifetimeCopies copies the event fits its own plane first, as it does after a
+        // match less confident than lifetimeCopyConfidence_ (most often a wrong one).
+        std::pair<float, Vec2f> matched;
+        if (matchable && !(m.confidence < lifetimeCopyConfidence_) && window.get(matched)
+            && window.copies < maxLifetimeCopies_)
         {
-            // A lifetime copied back and forth between the sensors is never refitted while the edge changes
-            // speed (a swinging limb): past maxLifetimeCopies copies the event fits its own plane first, as it
-            // does after a match less confident than lifetimeCopyConfidence_ (most often a wrong one).
-            std::pair<float, Vec2f> matched;
-            const bool haveMatch = window.get(matched);
-            if (haveMatch && window.copies < maxLifetimeCopies_)
+            lifetimeCopies = window.copies + 1;
+            if (m.confidence >= matchedLifetimeConfidence_)
             {
-                lifetimeCopies = window.copies + 1;
-                if (m.confidence >= matchedLifetimeConfidence_)
-                {
-                    est.lifetime = matched.first;
-                    est.flow = matched.second;
-                    insertEventInRows(estimator, re, est.lifetime, est.flow, s.lifetimes[c]);
-                    status = LIFETIME_MATCHED;
-                }
-                else
-                {
-                    // Every event keeps its best disparity, noise included, and noise finds some candidate: below
-                    // matchedLifetimeConfidence_ the event's own plane says whether it is noise before it takes
-                    // the match's lifetime.
-                    est.lifetime = processMatchedEventInRows(estimator, re, matched, est.flow, status, s.lifetimes[c]);
-                }
-            }
-            else if (haveMatch && m.confidence >= matchedLifetimeConfidence_)
-            {
-                // Past the limit the event's own plane comes first; the match's lifetime only where it finds none.
-                est.lifetime = refitMatchedEventInRows(estimator, re, window, est.flow, status, s.lifetimes[c]);
-                lifetimeCopies = window.copies + 1;
+                est.lifetime = matched.first;
+                est.flow = matched.second;
+                insertEventInRows(estimator, re, est.lifetime, est.flow, s.lifetimes[c]);
+                status = LIFETIME_MATCHED;
             }
             else
-                est.lifetime = processEventInRows(estimator, re, est.flow, status, s.lifetimes[c]);
+            {
+                // Every event keeps its best disparity, noise included, and noise finds some candidate: below
+                // matchedLifetimeConfidence_ the event's own plane says whether it is noise before it takes the
+                // match's lifetime.
+                est.lifetime = processMatchedEventInRows(estimator, re, matched, est.flow, status, s.lifetimes[c]);
+            }
         }
         else if (matchable && m.confidence >= matchedLifetimeConfidence_)
         {
-            // A match less confident than lifetimeCopyConfidence_: the event's own plane first, and only where
-            // it finds none the matched window's median (none there: noise).
+            // The event's own plane first; only where it finds none the matched window's median (taken here if
+            // not above; an empty window leaves the event noise, as processEventInRows would).
             est.lifetime = refitMatchedEventInRows(estimator, re, window, est.flow, status, s.lifetimes[c]);
             lifetimeCopies = window.copies + 1;
         }
