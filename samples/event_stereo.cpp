@@ -31,7 +31,9 @@
 #include "sample_stereo_pair.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <fstream>
 #include <iostream>
 #include <memory>
@@ -54,6 +56,7 @@ struct Options
     // of the view, most real scenes), so one thread unless asked.
     int threads = 1;
     double frameMs = 0, durationMs = 0, rightTimeOffsetMs = 0;
+    bool estimateClock = true;  // --right-time-offset-ms=auto: estimateClockOffset() on the first seconds
 };
 
 const char* const keys =
@@ -66,7 +69,7 @@ const char* const keys =
     "{sensor            |            | sensor size WxH or a name (DVS128, DAVIS240, DAVIS346) when the format has none}"
     "{left-camera-value | 0          | the camera column's value that means left, in text recordings}"
     "{one-based         | false      | text recordings count pixels from 1}"
-    "{right-time-offset-ms | 0       | added to the right camera's timestamps: two recordings whose clocks differ}"
+    "{right-time-offset-ms | auto    | added to the right camera's timestamps [ms]; auto: estimated from the first seconds of events (estimateClockOffset) and applied when the events are clear about it}"
     "{mode              | coupled    | coupled, decoupled, fixed or sgbm}"
     "{min-disparity     | 0          | smallest disparity searched [px]}"
     "{max-disparity     | 40         | largest disparity searched [px]}"
@@ -97,7 +100,15 @@ bool parse(int argc, char** argv, Options& o)
         o.sensor = parseSensorSize(cmd.get<std::string>("sensor"));
     o.leftCameraValue = cmd.get<int>("left-camera-value");
     o.oneBased = cmd.has("one-based");
-    o.rightTimeOffsetMs = cmd.get<double>("right-time-offset-ms");
+    const std::string clock = cmd.get<std::string>("right-time-offset-ms");
+    o.estimateClock = clock == "auto";
+    if (!o.estimateClock)
+    {
+        char* end = nullptr;
+        o.rightTimeOffsetMs = std::strtod(clock.c_str(), &end);
+        if (clock.empty() || *end != 0 || !std::isfinite(o.rightTimeOffsetMs))
+            throw std::runtime_error("--right-time-offset-ms=" + clock + ": give milliseconds, or auto");
+    }
     o.mode = cmd.get<std::string>("mode");
     o.minDisparity = cmd.get<int>("min-disparity");
     o.maxDisparity = cmd.get<int>("max-disparity");
@@ -132,6 +143,13 @@ public:
         if (o.input.empty() && o.left.empty() && !o.live)
         {
             sim_ = StereoEventSimulator::create(o.scene);
+            if (o.rightTimeOffsetMs != 0)
+            {
+                // The simulated right camera restamped as a capture would do it.
+                SimulatorSettings s = sim_->getSettings();
+                s.rightClockOffsetUs += o.rightTimeOffsetMs * 1000;
+                sim_ = StereoEventSimulator::create(sim_->getPlanes(), s);
+            }
             durationUs_ = o.durationMs * 1000;
             windowUs_ = o.frameMs * 1000;
             name_ = "simulated scene \"" + o.scene + "\" (" + std::to_string((int)o.durationMs) + " ms)";
@@ -266,6 +284,95 @@ std::string confidenceQuartiles(const std::vector<int64>& h)
                       100.0 * (double)low / (double)n, lowConfidence);
 }
 
+// Moves each event to its rectified pixel (the check looks at rows and columns as the matcher will).
+void rectifyEvents(const StereoCalibration& calibration, std::vector<Event>& events)
+{
+    for (int camera = 0; camera < 2; camera++)
+    {
+        std::vector<Point2f> raw;
+        for (const Event& e : events)
+            if (e.camera == camera)
+                raw.push_back(Point2f(e.x, e.y));
+        if (raw.empty())
+            continue;
+        Mat rectified;
+        calibration.rectifyPoints(raw, rectified, camera);
+        size_t k = 0;
+        for (Event& e : events)
+            if (e.camera == camera)
+            {
+                const Point2f q = rectified.at<Point2f>((int)k++);
+                e.x = (short)cvRound(q.x);
+                e.y = (short)cvRound(q.y);
+            }
+    }
+}
+
+// --right-time-offset-ms=auto: the right camera's clock against the left one's (estimateClockOffset()) from the
+// first three seconds of events (longer while there are fewer than 20,000, up to 20 s; at most 300,000, as the
+// events are matched several times), read by a capture of its own before the run. Applied when its
+// uncertainty is below kSampleMaxClockUncertaintyUs; otherwise the events cannot tell an offset from a
+// disparity (one object at one speed) and the clocks are left as they are.
+struct ClockCheck
+{
+    std::string result = "not estimated";
+    double appliedMs = 0;
+};
+
+ClockCheck checkClocks(Options o)
+{
+    ClockCheck check;
+    if (!o.estimateClock)
+    {
+        check.result = cv::format("%+.2f ms, as given (--right-time-offset-ms)", o.rightTimeOffsetMs);
+        check.appliedMs = o.rightTimeOffsetMs;
+        return check;
+    }
+    if (o.live)
+    {
+        check.result = "not estimated (live; give --right-time-offset-ms)";
+        return check;
+    }
+    o.rightTimeOffsetMs = 0;
+    o.durationMs = std::min(o.durationMs, 3000.0);
+    Source probe(o);
+    const Size size = probe.sensorSize();
+    if (size.empty())
+        return check;  // the run itself says what is missing
+    std::vector<Event> events, packet;
+    Mat truth;
+    double windowEnd = 0;
+    while (probe.next(packet, truth, windowEnd))
+    {
+        events.insert(events.end(), packet.begin(), packet.end());
+        const int64 span = events.empty() ? 0 : events.back().t - events.front().t;
+        if ((span > 3000000 && events.size() >= 20000) || span > 20000000 || events.size() >= 300000)
+            break;
+    }
+    const double seconds = events.empty() ? 0 : (double)(events.back().t - events.front().t) * 1e-6;
+    size_t count[2] = { 0, 0 };
+    for (const Event& e : events)
+        count[e.camera ? 1 : 0]++;
+    if (std::min(count[0], count[1]) < 1000)
+    {
+        check.result = cv::format("not estimated (left %zu events, right %zu in the first %.1f s)", count[0], count[1], seconds);
+        return check;
+    }
+    if (!o.calib.empty())
+        rectifyEvents(readStereoCalibration(o.calib), events);
+    double uncertainty = 0;
+    const double offset = estimateClockOffset(events, size, o.minDisparity, o.maxDisparity, &uncertainty);
+    check.result = cv::format("%+.2f ms +- %.2f ms (estimateClockOffset, first %.1f s)", offset * 1e-3, uncertainty * 1e-3, seconds);
+    if (uncertainty <= kSampleMaxClockUncertaintyUs)
+    {
+        check.appliedMs = std::round(offset / 10) * 0.01;  // to 10 us: the summary shows what was applied
+        check.result += ": applied";
+    }
+    else
+        check.result += cv::format(": not applied, the events do not pin it down (uncertainty above %.0f ms: one object at one speed along the rows, or surfaces whose speeds follow their depth)", kSampleMaxClockUncertaintyUs * 1e-3);
+    return check;
+}
+
 // Whether the pair is set up as the matcher assumes: its rows line up (estimateRowAlignment()) and its events
 // line up at a disparity inside the searched range, with the cameras the right way round
 // (estimateDominantDisparity()). Both look once at the first two seconds of events (longer while there are
@@ -331,7 +438,7 @@ private:
         else if (camerasOverlap())
         {
             if (!calibration_.imageSize.empty())
-                rectify();
+                rectifyEvents(calibration_, events_);
             estimateDisparity();
             if (size_.width < 3 * maxDisparity_ / 2 + 12)
                 rowResult_ = "not estimated (too narrow a sensor for the disparity range)";
@@ -409,29 +516,6 @@ private:
         }
     }
 
-    void rectify()
-    {
-        for (int camera = 0; camera < 2; camera++)
-        {
-            std::vector<Point2f> raw;
-            for (const Event& e : events_)
-                if (e.camera == camera)
-                    raw.push_back(Point2f(e.x, e.y));
-            if (raw.empty())
-                continue;
-            Mat rectified;
-            calibration_.rectifyPoints(raw, rectified, camera);
-            size_t k = 0;
-            for (Event& e : events_)
-                if (e.camera == camera)
-                {
-                    const Point2f q = rectified.at<Point2f>((int)k++);
-                    e.x = (short)cvRound(q.x);
-                    e.y = (short)cvRound(q.y);
-                }
-        }
-    }
-
     Size size_;
     int minDisparity_, maxDisparity_;
     std::string swapAdvice_;
@@ -453,6 +537,8 @@ int main(int argc, char** argv)
             return 0;
         if (!utils::fs::createDirectories(opt.output))
             throw std::runtime_error(opt.output + ": cannot create the output folder");
+        const ClockCheck clocks = checkClocks(opt);
+        opt.rightTimeOffsetMs = clocks.appliedMs;
         Source source(opt);
         const Size size = source.sensorSize();
         if (size.empty())
@@ -621,6 +707,7 @@ int main(int argc, char** argv)
              << pct(withDisparity[0], perCamera[0]) << " %, right " << pct(withDisparity[1], perCamera[1]) << " %) |\n"
              << "| events with a lifetime | " << pct(withLifetime[0] + withLifetime[1], events) << " % (left "
              << withLifetime[0] << ", right " << withLifetime[1] << ") |\n"
+             << "| right camera's clock against the left one's | " << clocks.result << " |\n"
              << "| row alignment of the pair (estimateRowAlignment, " << pairCheck.span() << ") | " << pairCheck.rowResult() << " |\n"
              << "| disparity the pair's events line up at (estimateDominantDisparity, " << pairCheck.span() << ") | "
              << pairCheck.disparityResult() << " |\n"

@@ -484,6 +484,135 @@ TEST(Event_SimulatorSensor, swinging_plane_moves_as_its_pivot_and_swing_rate_say
     EXPECT_GT(checked, 100);
 }
 
+// A bright bar (0.9) 0.1 m wide at 1 m crossing a dark background (0.1) at 80 px/s: each pixel it passes gets
+// its leading edge (ON, log contrast ln 9) and then its trailing edge (OFF).
+std::vector<SimulatedPlane> crossingBar()
+{
+    std::vector<SimulatedPlane> scene = sweepingEdgeScene(1.0, 0.4, -0.1);
+    scene[1].center[0] = -0.15;
+    scene[1].halfSize[0] = 0.05;
+    return scene;
+}
+
+typedef std::map<std::tuple<int, int, int>, std::vector<Event>> PixelEvents;  // (camera, y, x) -> events
+
+PixelEvents eventsPerPixel(const std::vector<Event>& events)
+{
+    PixelEvents out;
+    for (const Event& e : events)
+        out[std::make_tuple((int)e.camera, (int)e.y, (int)e.x)].push_back(e);
+    return out;
+}
+
+TEST(Event_SimulatorSensor, extra_latency_delays_each_camera_and_polarity_by_its_own_amount)
+{
+    const Vec4d extra(100, 300, 700, 1300);  // left ON, left OFF, right ON, right OFF
+    SimulatorSettings s = idealSmallSensor();
+    std::vector<Event> base, late;
+    simulate(crossingBar(), s, 500000, nullptr, &base);
+    s.extraLatencyUs = extra;
+    simulate(crossingBar(), s, 502000, nullptr, &late);
+    const PixelEvents a = eventsPerPixel(base), b = eventsPerPixel(late);
+    int compared[4] = { 0, 0, 0, 0 };
+    for (const auto& kv : a)
+    {
+        const std::vector<Event>& before = kv.second;
+        const std::vector<Event>& after = b.at(kv.first);
+        ASSERT_GE(after.size(), before.size());
+        for (size_t k = 0; k < before.size(); k++)
+        {
+            const int which = 2 * before[k].camera + (before[k].p == POLARITY_ON ? 0 : 1);
+            ASSERT_EQ(before[k].p, after[k].p);
+            // Whole microseconds added to the crossing time before it is floored: exact.
+            EXPECT_EQ((int64)extra[which], after[k].t - before[k].t) << "camera " << (int)before[k].camera << " p " << (int)before[k].p;
+            compared[which]++;
+        }
+    }
+    for (int which = 0; which < 4; which++)
+        EXPECT_GT(compared[which], 500) << "events of camera " << which / 2 << (which % 2 ? " OFF" : " ON");
+}
+
+TEST(Event_SimulatorSensor, right_clock_offset_and_drift_restamp_every_right_event)
+{
+    SimulatorSettings s = idealSmallSensor();
+    s.latencyUs = 50;
+    s.latencySigmaUs = 20;
+    s.jitterUs = 30;
+    s.noiseRateHz = 2;
+    s.hotPixelShare = 0.01;
+    s.hotPixelRateHz = 200;
+    s.leakRateHz = 1;
+    std::vector<Event> base;
+    simulate(crossingBar(), s, 400000, nullptr, &base);
+    for (const Vec2d& clock : { Vec2d(3000, 0), Vec2d(-4500, 0), Vec2d(2500, 300), Vec2d(-1000, -200) })
+    {
+        SimulatorSettings shifted = s;
+        shifted.rightClockOffsetUs = clock[0];
+        shifted.rightClockDriftPpm = clock[1];
+        std::vector<Event> events;
+        simulate(crossingBar(), shifted, 400000, nullptr, &events);  // checks the stream is in time order
+        const auto restamp = [&](int64 t) { return t + (int64)std::llround(clock[0] + clock[1] * 1e-6 * (double)t); };
+        // The events each clock stamps before 300 ms: left ones as they were, right ones restamped.
+        const int64 end = 300000;
+        std::vector<Event> expected, got;
+        for (const Event& e : base)
+        {
+            Event r = e;
+            if (e.camera == CAMERA_RIGHT)
+                r.t = restamp(e.t);
+            if (e.t < end)
+                expected.push_back(r);
+        }
+        for (const Event& e : events)
+            if (e.t < (e.camera == CAMERA_RIGHT ? restamp(end) : end))
+                got.push_back(e);
+        const auto order = [](const Event& x, const Event& y) {
+            return std::make_tuple(x.camera, x.t, x.y, x.x, x.p) < std::make_tuple(y.camera, y.t, y.y, y.x, y.p);
+        };
+        std::sort(expected.begin(), expected.end(), order);
+        std::sort(got.begin(), got.end(), order);
+        ASSERT_GT(expected.size(), 4000u);
+        ASSERT_EQ(expected.size(), got.size()) << "offset " << clock[0] << " us, drift " << clock[1] << " ppm";
+        for (size_t i = 0; i < expected.size(); i++)
+            ASSERT_EQ(expected[i], got[i]) << i << ", offset " << clock[0] << " us, drift " << clock[1] << " ppm";
+    }
+}
+
+TEST(Event_SimulatorSensor, thresholds_per_camera_and_polarity_give_their_closed_form_counts)
+{
+    // Log contrast L = ln 9 up, then down again: floor(L / C_on) ON events from the dark level, then OFF
+    // events from the last ON level down to the dark level: floor(n_on C_on / C_off).
+    SimulatorSettings s = idealSmallSensor();
+    s.thresholdOn = 0.3;
+    s.thresholdOff = 0.22;
+    s.rightThresholdScale = 0.8;
+    std::vector<Event> events;
+    simulate(crossingBar(), s, 500000, nullptr, &events);
+    const double L = std::log(9.0);
+    for (int c = 0; c < 2; c++)
+    {
+        const double on = s.thresholdOn * (c == CAMERA_RIGHT ? s.rightThresholdScale : 1.0);
+        const double off = s.thresholdOff * (c == CAMERA_RIGHT ? s.rightThresholdScale : 1.0);
+        const int nOn = (int)std::floor(L / on), nOff = (int)std::floor(nOn * on / off);
+        int crossed = 0;
+        for (const auto& kv : eventsPerPixel(events))
+        {
+            if (std::get<0>(kv.first) != c || kv.second.front().p != POLARITY_ON)
+                continue;  // another camera, or under the bar from the start
+            int countOn = 0, countOff = 0;
+            for (const Event& e : kv.second)
+                (e.p == POLARITY_ON ? countOn : countOff)++;
+            EXPECT_EQ(nOn, countOn) << "camera " << c;
+            if (countOff > 0)  // the trailing edge has passed
+            {
+                EXPECT_EQ(nOff, countOff) << "camera " << c;
+                crossed++;
+            }
+        }
+        EXPECT_GE(crossed, 15 * 32) << "camera " << c;  // 20 columns are crossed in 500 ms
+    }
+}
+
 TEST(Event_SimulatorSensor, every_effect_on_streams_alike_in_any_chunks)
 {
     SimulatorSettings s = idealSmallSensor();
@@ -500,6 +629,9 @@ TEST(Event_SimulatorSensor, every_effect_on_streams_alike_in_any_chunks)
     s.refractoryUs = 200;
     s.blurSigmaPx = 0.7;
     s.flickerFrequencyHz = 120;
+    s.extraLatencyUs = Vec4d(10, 40, 70, 130);
+    s.rightClockOffsetUs = -3000;  // stamps before the simulated time: generate() must simulate ahead
+    s.rightClockDriftPpm = 150;
     std::vector<SimulatedPlane> scene = sweepingEdge();
     scene[0].flickerDepth = 0.3;  // the background flickers, the edge does not
     Ptr<StereoEventSimulator> whole = StereoEventSimulator::create(scene, s);

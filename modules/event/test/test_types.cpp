@@ -71,6 +71,8 @@ TEST(Event_Types, vector_to_mat_shares_data_and_copies_back)
     expectSameEvents(ev, std::vector<Event>(typed.begin(), typed.end()));
     expectSameEvents(ev, toEventVector(m));
     expectSameEvents(ev, toEventVector(m.t()));  // 1 x N is accepted too
+    EXPECT_TRUE(toEventVector(Mat()).empty()) << "an empty packet is no events";
+    EXPECT_TRUE(toEventVector(std::vector<Event>()).empty());
 }
 
 TEST(Event_Types, getEventMat_rejects_other_types)

@@ -112,6 +112,8 @@ Mat_<Event> getEventMat(InputArray events)
 std::vector<Event> toEventVector(InputArray events)
 {
     Mat_<Event> m = getEventMat(events);
+    if (m.empty())
+        return std::vector<Event>();  // an empty Mat_'s iterators cannot be compared (OpenCV 4.6 crashes)
     return std::vector<Event>(m.begin(), m.end());
 }
 

@@ -56,6 +56,38 @@ void realSensor(SimulatorSettings& s)
     s.rightRollRad = 0.004;  // with the offset: 0.5 px at one side of a DAVIS240, 1 px at the other
 }
 
+// Two DAVIS240s of a real stereo rig (measured against recordings of such pairs): on top of realSensor(), OFF
+// events fire more readily than ON ones, thresholds vary more from pixel to pixel and from one crossing to
+// the next (dotted edges with holes), the optics blur edges to 2-4 px, the right sensor fires
+// 1 / rightScale times as many events as the left, and it stamps them rightClockUs later (its clock, and its
+// OFF circuit, which is slower than its ON one).
+void davis240Pair(SimulatorSettings& s, double rightScale, double rightClockUs)
+{
+    realSensor(s);
+    s.thresholdOn = 0.5;
+    s.thresholdOff = 0.25;
+    s.thresholdSigma = 0.08;
+    s.thresholdNoise = 0.05;
+    s.noiseRateHz = 0.03;
+    s.blurSigmaPx = 0.8;
+    s.rightThresholdScale = rightScale;
+    s.rightClockOffsetUs = rightClockUs;
+    s.extraLatencyUs = Vec4d(0, 200, 0, 500);
+}
+
+// A box that a hand slides to and fro along the baseline: a swing of @p amplitude [m] at @p frequency [Hz]
+// about a pivot far above, so that it moves nearly straight, fastest in the middle and turning at the ends.
+SimulatedPlane slidingBox(Vec3d center, Vec2d halfSize, double intensity, double amplitude, double frequency, double phase)
+{
+    SimulatedPlane p = uniformPlane(center, halfSize, intensity);
+    const double pivotHeight = 6.0;  // [m] above the box's centre
+    p.swingPivot = Vec2d(0, -pivotHeight);
+    p.swingAmplitude = amplitude / pivotHeight;
+    p.swingFrequency = frequency;
+    p.swingPhase = phase;
+    return p;
+}
+
 // How a walking figure's limbs look: the far-side leg's and arm's intensities (the near side's are 1.2 and
 // 1.12 times brighter), and the contrast of a block texture on them (0: plain).
 struct WalkerLook
@@ -195,6 +227,32 @@ std::vector<SimulatedPlane> simulatedScene(const String& name, SimulatorSettings
         realSensor(s);
         s.rightThresholdScale = 1.1;
     }
+    else if (name == "boxes_pair" || name == "boxes_fast_pair")
+    {
+        // Two plain boxes 1 m and 2 m away (20 and 10 px) slid to and fro in front of a plain wall at 5 m, as
+        // recorded by a real DAVIS240 pair (davis240Pair): boxes_pair's right camera fires 1.4 x the events
+        // and stamps them 2 ms late; boxes_fast_pair's boxes move twice as fast and its right camera fires
+        // 1.6 x the events 2.5 ms early.
+        const bool fast = name == "boxes_fast_pair";
+        const double k = fast ? 2.0 : 1.0;
+        planes.push_back(uniformPlane(Vec3d(0, 0, 5.0), Vec2d(8, 6), 0.22));
+        SimulatedPlane nearBox = slidingBox(Vec3d(-0.25, 0.05, 1.0), Vec2d(0.1, 0.12), 0.4, 0.2, 0.35 * k, 0);
+        nearBox.texture = TEXTURE_BLOCKS;  // a print on it
+        nearBox.cellSize = 0.03;
+        nearBox.contrast = 0.3;
+        nearBox.textureSeed = 53;
+        planes.push_back(nearBox);
+        planes.push_back(slidingBox(Vec3d(0.45, -0.1, 2.0), Vec2d(0.15, 0.2), 0.345, 0.3, 0.25 * k, 2.0));
+        davis240Pair(s, fast ? 0.76 : 0.8, fast ? -2500 : 2000);
+    }
+    else if (name == "walking_pair")
+    {
+        // walking_near's person as a real DAVIS240 pair records it (davis240Pair): the right camera fires
+        // 0.66 x the left's events and stamps them 1.7 ms early.
+        planes.push_back(uniformPlane(Vec3d(0, 0, 6.0), Vec2d(10, 8), 0.5));
+        addWalker(planes, 3.0, 1.1, -1.6, WalkerLook{ 0.36, 0.4, 0 });
+        davis240Pair(s, 1.3, -1700);
+    }
     else if (name == "low_contrast")
     {
         // A faintly textured plane (log contrast up to 0.36, about one threshold) sliding over a plain wall.
@@ -218,7 +276,8 @@ std::vector<SimulatedPlane> simulatedScene(const String& name, SimulatorSettings
 std::vector<String> simulatedSceneNames()
 {
     return std::vector<String>{ "plane", "two_planes", "moving_line", "faint_line", "cluttered",
-                                "boxes", "boxes_fast", "walking", "walking_near", "low_contrast", "boxes_flicker" };
+                                "boxes", "boxes_fast", "walking", "walking_near", "low_contrast", "boxes_flicker",
+                                "boxes_pair", "boxes_fast_pair", "walking_pair" };
 }
 
 }  // namespace detail

@@ -117,9 +117,12 @@ public:
         if (!(s.latencyUs >= 0 && s.latencySigmaUs >= 0 && s.jitterUs >= 0 && s.hotPixelShare >= 0 &&
               s.hotPixelShare <= 1 && s.hotPixelRateHz >= 0 && s.leakRateHz >= 0 && s.noiseRateHz >= 0 &&
               std::abs(s.rightRollRad) < 0.5 && std::abs(s.rightRowOffset) < s.resolution.height &&
-              s.thresholdNoise >= 0 && s.blurSigmaPx >= 0 && s.blurSigmaPx <= 10))
+              s.thresholdNoise >= 0 && s.blurSigmaPx >= 0 && s.blurSigmaPx <= 10 && s.extraLatencyUs[0] >= 0 &&
+              s.extraLatencyUs[1] >= 0 && s.extraLatencyUs[2] >= 0 && s.extraLatencyUs[3] >= 0 &&
+              std::abs(s.rightClockOffsetUs) < 1e12 && std::abs(s.rightClockDriftPpm) < 1e5))
             CV_Error(Error::StsBadArg, "StereoEventSimulator: latencies, jitter, rates and the hot-pixel share must "
-                                       "be >= 0 (share <= 1), the roll below 0.5 rad, the row offset within the image, the blur at most 10 px");
+                                       "be >= 0 (share <= 1), the roll below 0.5 rad, the row offset within the image, "
+                                       "the blur at most 10 px, the right clock's drift below 1e5 ppm");
         for (const SimulatedPlane& p : planes)
         {
             if (!(p.flickerDepth >= 0 && p.flickerDepth < 1))
@@ -131,7 +134,7 @@ public:
                                          s.flickerFrequencyHz));
         const int n = s.resolution.area();
         RNG latencyRng((uint64)(s.seed * 7919 + 101)), hotPixelRng((uint64)(s.seed * 7919 + 202));
-        delayed_ = s.latencyUs > 0 || s.latencySigmaUs > 0 || s.jitterUs > 0;
+        delayed_ = s.latencyUs > 0 || s.latencySigmaUs > 0 || s.jitterUs > 0 || s.extraLatencyUs != Vec4d::all(0);
         for (int c = 0; c < 2; c++)
         {
             const double scale = c == CAMERA_RIGHT ? s.rightThresholdScale : 1.0;
@@ -170,7 +173,10 @@ public:
             groundTruth.release();
             return false;
         }
-        while (t_ < untilUs)
+        // A right clock behind the shared one stamps events earlier than they fire: simulate far enough ahead
+        // that every event stamped before untilUs exists.
+        const double lead = std::max(0.0, -s_.rightClockOffsetUs) + std::max(0.0, -s_.rightClockDriftPpm * 1e-6 * untilUs) + 1;
+        while (t_ < untilUs + lead)
             step();
         // Hand out what is before untilUs; events after it wait for the next call, so the output does not
         // depend on how the simulation is chunked.
@@ -505,9 +511,11 @@ private:
                     if (delayed_)
                     {
                         const double jitter = s_.jitterUs > 0 ? -s_.jitterUs * std::log(1.0 - jitterRng_.uniform(0.0, 1.0)) : 0.0;
-                        ts = std::max(lastStamp_[c][i], std::max((int64)t0, (int64)std::floor(te + latency_[c][i] + jitter)));
+                        const double extra = s_.extraLatencyUs[2 * c + (up ? 0 : 1)];
+                        ts = std::max(lastStamp_[c][i], std::max((int64)t0, (int64)std::floor(te + latency_[c][i] + extra + jitter)));
                         lastStamp_[c][i] = ts;
                     }
+                    ts = cameraClock(c, ts);
                     std::array<float, 6> g = truth(c, x, y);
                     if (byFlicker)
                         g[GT_FLAGS] = (float)((int)g[GT_FLAGS] | GT_FLAG_FLICKER);
@@ -588,6 +596,15 @@ private:
         return g;
     }
 
+    // The stamp camera c gives an event that a shared clock stamps ts: the right camera's clock is off by
+    // rightClockOffsetUs and runs rightClockDriftPpm fast.
+    int64 cameraClock(int c, int64 ts) const
+    {
+        if (c != CAMERA_RIGHT || (s_.rightClockOffsetUs == 0 && s_.rightClockDriftPpm == 0))
+            return ts;
+        return ts + (int64)std::llround(s_.rightClockOffsetUs + s_.rightClockDriftPpm * 1e-6 * (double)ts);
+    }
+
     // Poisson count by inversion. exp(-lambda) underflows to 0 beyond lambda ~ 745 (high noise rates on
     // large sensors), after which inversion would never stop; a Poisson(lambda) count is the sum of
     // Poisson(lambda / k) counts, so larger means are drawn in chunks of at most 500.
@@ -625,7 +642,7 @@ private:
                 for (int k = 0; k < count; k++)
                 {
                     const int64 ts = std::min((int64)t1 - 1, (int64)std::floor(hotRng_.uniform(t0, t1)));
-                    out.push_back(std::make_pair(Event(ts, hot.first % sz.width, hot.first / sz.width, hot.second, c), noise));
+                    out.push_back(std::make_pair(Event(cameraClock(c, ts), hot.first % sz.width, hot.first / sz.width, hot.second, c), noise));
                 }
             }
             if (s_.leakRateHz > 0)
@@ -635,7 +652,7 @@ private:
                 {
                     const int x = leakRng_.uniform(0, sz.width), y = leakRng_.uniform(0, sz.height);
                     const int64 ts = std::min((int64)t1 - 1, (int64)std::floor(leakRng_.uniform(t0, t1)));
-                    out.push_back(std::make_pair(Event(ts, x, y, POLARITY_ON, c), noise));
+                    out.push_back(std::make_pair(Event(cameraClock(c, ts), x, y, POLARITY_ON, c), noise));
                 }
             }
         }
@@ -651,7 +668,7 @@ private:
                 const int64 ts = std::min((int64)t1 - 1, (int64)std::floor(rng_.uniform(t0, t1)));
                 const int polarity = rng_.uniform(0, 2);
                 std::array<float, 6> g = { { 0, 0, 0, 0, 0, (float)GT_FLAG_NOISE } };
-                out.push_back(std::make_pair(Event(ts, x, y, polarity, c), g));
+                out.push_back(std::make_pair(Event(cameraClock(c, ts), x, y, polarity, c), g));
             }
         }
     }

@@ -100,6 +100,16 @@ struct CV_EXPORTS SimulatorSettings
     offset drawn once from a normal distribution of standard deviation latencySigmaUs (clipped at 0) [us]. */
     double latencyUs = 0;
     double latencySigmaUs = 0;         //!< @copydoc latencyUs
+    /** Extra readout latency per camera and polarity, (left ON, left OFF, right ON, right OFF) [us], on top of
+    latencyUs: two sensors of a pair, or a sensor's ON and OFF circuits, biased differently react at different
+    speeds. Each must be >= 0. */
+    Vec4d extraLatencyUs = Vec4d(0, 0, 0, 0);
+    /** The right camera's clock against the left one: every right-camera event (noise included) is stamped
+    t + rightClockOffsetUs + rightClockDriftPpm * 1e-6 * t, where t is the stamp a shared clock would give.
+    Two cameras synchronised in software, or not at all, disagree by a few milliseconds and drift apart by
+    tens of parts per million. */
+    double rightClockOffsetUs = 0;
+    double rightClockDriftPpm = 0;     //!< @copydoc rightClockOffsetUs
     /** Timestamp jitter: a further delay per event, exponential with this mean [us]. A pixel's events keep
     their order (a stamp earlier than the pixel's previous one is moved up to it). */
     double jitterUs = 0;

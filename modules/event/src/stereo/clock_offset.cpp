@@ -1,0 +1,329 @@
+// This file is part of OpenCV project.
+// It is subject to the license terms in the LICENSE file found in the top-level directory
+// of this distribution and at http://opencv.org/license.html.
+
+// estimateClockOffset(): the right camera's clock against the left one's, from how matched disparities grow
+// with the speed of the edge along the row on one surface.
+
+#include "precomp.hpp"
+
+#include <limits>
+#include <map>
+
+namespace cv {
+namespace event {
+namespace {
+
+const int kBlock = 8;              // px: a surface's disparity is taken as one within a block ...
+const int64 kSlotUs = 10000000;    // ... over ten seconds
+const int64 kCellUs = 50000;       // speeds are taken as one within a block over this time
+const float kSurfaceGap = 1.0f;    // px: disparities further apart than this in a block are other surfaces
+const size_t kMinSurfaceEvents = 4;
+const float kMinConfidence = 0.3f;
+const double kMaxRowSpeed = 3000;  // px/s: faster along the row is an edge nearly along the row
+const int kMaxMatcherRuns = 5;
+const double kMaxOffsetUs = 20000;         // the offsets tried: software-synchronised clocks are closer
+const double kConfidenceTolerance = 0.002; // mean confidence an offset may cost before it counts as worse
+const double kMinGain = 0.1;               // below, the slope hardly follows the offset: nothing to go by
+
+double clampOffset(double offsetUs)
+{
+    return std::max(-kMaxOffsetUs, std::min(kMaxOffsetUs, offsetUs));
+}
+
+// One matched event: its block and half second, its disparity, its edge's speed along the row u and the
+// row-offset regressor w (how far a row shift moves the edge along the row).
+struct Sample
+{
+    int64 group, cell;  // cell: the group's 50 ms in which the event fired
+    float d, u, w;
+};
+
+// A plane fit's flow on a dotted edge is noisy, and noise in the regressor flattens the slope: each event takes
+// the median speed of its camera's events in its block and 50 ms instead.
+void smoothSpeeds(std::vector<Sample>& samples)
+{
+    std::sort(samples.begin(), samples.end(), [](const Sample& a, const Sample& b) { return a.cell < b.cell; });
+    std::vector<float> u, w;
+    size_t out = 0;
+    for (size_t begin = 0; begin < samples.size();)
+    {
+        size_t end = begin;
+        u.clear();
+        w.clear();
+        for (; end < samples.size() && samples[end].cell == samples[begin].cell; end++)
+        {
+            u.push_back(samples[end].u);
+            w.push_back(samples[end].w);
+        }
+        if (u.size() >= 3)
+        {
+            std::nth_element(u.begin(), u.begin() + u.size() / 2, u.end());
+            std::nth_element(w.begin(), w.begin() + w.size() / 2, w.end());
+            for (size_t i = begin; i < end; i++)
+            {
+                samples[out] = samples[i];
+                samples[out].u = u[u.size() / 2];
+                samples[out].w = w[w.size() / 2];
+                out++;
+            }
+        }
+        begin = end;
+    }
+    samples.resize(out);
+}
+
+struct SlopeFit
+{
+    bool ok = false;
+    double slopeUs = 0;  // d(disparity) / d(u), as a time [us]
+    double standardErrorUs = std::numeric_limits<double>::infinity();
+    double offsetUs = 0;        // the right camera's restamping it was measured at
+    double meanConfidence = 0;  // of the events with a disparity: how clear-cut the matches were
+};
+
+// Within-surface least squares of d on (u, w): every surface has its own intercept (its disparity), so only
+// how d changes with u and w on one surface counts.
+class SurfaceRegression
+{
+public:
+    explicit SurfaceRegression(std::vector<Sample> samples) : samples_(std::move(samples))
+    {
+        std::sort(samples_.begin(), samples_.end(), [](const Sample& a, const Sample& b) {
+            return a.group != b.group ? a.group < b.group : a.d < b.d;
+        });
+    }
+
+    SlopeFit fit()
+    {
+        SlopeFit result;
+        std::vector<char> kept(samples_.size(), 1);
+        Vec2d beta;
+        for (int pass = 0; pass < 3; pass++)
+        {
+            if (!solve(kept, beta))
+                return result;
+            if (pass == 2)
+                break;
+            // Trim what no surface explains (a wrong match, a surface cut wrongly): beyond 3 robust sigmas.
+            std::vector<float> absResidual;
+            for (size_t i = 0; i < samples_.size(); i++)
+                if (kept[i])
+                    absResidual.push_back(std::abs(residuals_[i]));
+            if (absResidual.empty())
+                return result;
+            std::nth_element(absResidual.begin(), absResidual.begin() + absResidual.size() / 2, absResidual.end());
+            const double limit = std::max(0.05, 3 * 1.4826 * absResidual[absResidual.size() / 2]);
+            for (size_t i = 0; i < samples_.size(); i++)
+                if (kept[i] && std::abs(residuals_[i]) > limit)
+                    kept[i] = 0;
+        }
+        result.ok = true;
+        result.slopeUs = beta[0] * 1e6;
+        result.standardErrorUs = standardError_ * 1e6;
+        return result;
+    }
+
+private:
+    // Fits the kept samples; sets residuals_ and standardError_ (of the u slope, clustered by block and half
+    // second, as neighbouring events share their matches).
+    bool solve(const std::vector<char>& kept, Vec2d& beta)
+    {
+        const size_t n = samples_.size();
+        centred_.assign(n, Vec3d(0, 0, 0));
+        std::vector<char> used(n, 0);
+        Matx22d A = Matx22d::zeros();
+        Vec2d b(0, 0);
+        for (size_t begin = 0; begin < n;)
+        {
+            // One surface: the kept samples of a group whose disparities follow each other within the gap.
+            size_t end = begin;
+            std::vector<size_t> surface;
+            float last = 0;
+            while (end < n && samples_[end].group == samples_[begin].group &&
+                   (surface.empty() || samples_[end].d - last <= kSurfaceGap || !kept[end]))
+            {
+                if (kept[end])
+                {
+                    surface.push_back(end);
+                    last = samples_[end].d;
+                }
+                end++;
+            }
+            if (surface.size() >= kMinSurfaceEvents)
+            {
+                Vec3d mean(0, 0, 0);
+                for (size_t i : surface)
+                    mean += Vec3d(samples_[i].u, samples_[i].w, samples_[i].d);
+                mean *= 1.0 / (double)surface.size();
+                for (size_t i : surface)
+                {
+                    const Vec3d c = Vec3d(samples_[i].u, samples_[i].w, samples_[i].d) - mean;
+                    centred_[i] = c;
+                    used[i] = 1;
+                    A(0, 0) += c[0] * c[0];
+                    A(0, 1) += c[0] * c[1];
+                    A(1, 1) += c[1] * c[1];
+                    b[0] += c[0] * c[2];
+                    b[1] += c[1] * c[2];
+                }
+            }
+            begin = end;
+        }
+        A(1, 0) = A(0, 1);
+        // Vertical edges only: w does not vary and takes nothing up (a tiny ridge keeps the system solvable).
+        A(1, 1) += 1e-9 + 1e-9 * A(1, 1);
+        const double det = A(0, 0) * A(1, 1) - A(0, 1) * A(1, 0);
+        if (!(A(0, 0) > 0) || !(det > 1e-12 * A(0, 0) * A(1, 1)))
+            return false;
+        const Matx22d inv = A.inv();
+        beta = inv * b;
+        residuals_.assign(n, 0.f);
+        std::map<int64, Vec2d> score;  // per group: sum of x e
+        for (size_t i = 0; i < n; i++)
+        {
+            if (!used[i])
+            {
+                residuals_[i] = std::numeric_limits<float>::infinity();  // not on a surface: trimmed with the outliers
+                continue;
+            }
+            const Vec3d& c = centred_[i];
+            const double e = c[2] - beta[0] * c[0] - beta[1] * c[1];
+            residuals_[i] = (float)e;
+            score[samples_[i].group] += Vec2d(c[0] * e, c[1] * e);
+        }
+        if (score.size() < 5)
+            return false;
+        Matx22d meat = Matx22d::zeros();
+        for (const auto& kv : score)
+            meat += kv.second * kv.second.t();
+        const double groups = (double)score.size();
+        const Matx22d V = inv * meat * inv * (groups / (groups - 1));
+        standardError_ = std::sqrt(std::max(0.0, V(0, 0)));
+        return true;
+    }
+
+    std::vector<Sample> samples_;
+    std::vector<Vec3d> centred_;  // (u, w, d) less the surface's means
+    std::vector<float> residuals_;
+    double standardError_ = 0;
+};
+
+// Matches the pair with the right camera restamped by @p offsetUs and fits the slope of disparity on speed.
+SlopeFit slopeAt(const std::vector<Event>& left, const std::vector<Event>& right, Size size, int minD, int maxD,
+                 double offsetUs)
+{
+    Mat merged;
+    mergeStereoEvents(left, right, merged, offsetUs);
+    Ptr<StereoEventMatcher> matcher = StereoEventMatcher::create(size, STEREO_COUPLED);
+    matcher->setMinDisparity(minD);
+    matcher->setMaxDisparity(maxD);
+    Mat disparity, flags, flow, confidence;
+    matcher->process(merged, disparity, noArray(), flags, noArray(), flow, confidence);
+    const Mat_<Event> ev = getEventMat(merged);
+    const int blocksX = (size.width + kBlock - 1) / kBlock, blocksY = (size.height + kBlock - 1) / kBlock;
+    const int64 t0 = ev.rows > 0 ? ev(0).t : 0;
+    std::vector<Sample> samples;
+    double confidenceSum = 0, matched = 0;
+    for (int i = 0; i < ev.rows; i++)
+    {
+        const int f = flags.at<int>(i);
+        if (f & STEREO_HAS_DISPARITY)
+        {
+            confidenceSum += confidence.at<float>(i);
+            matched++;
+        }
+        if (!(f & STEREO_HAS_DISPARITY) || (f & STEREO_BEYOND_VIEW) || confidence.at<float>(i) < kMinConfidence)
+            continue;
+        const Vec2f v = flow.at<Vec2f>(i);
+        const double speed2 = (double)v[0] * v[0] + (double)v[1] * v[1];
+        // An edge within 60 degrees of vertical: along the row it moves |f|^2 / f_x.
+        if (!(speed2 > 0) || 4.0 * v[0] * v[0] < speed2)
+            continue;
+        const double u = speed2 / v[0];
+        if (std::abs(u) > kMaxRowSpeed)
+            continue;
+        const Event& e = ev(i);
+        // A row offset moves an edge along the row by f_y / f_x rows, in opposite directions for the two cameras.
+        const double w = (e.camera == CAMERA_LEFT ? 1.0 : -1.0) * v[1] / v[0];
+        const int64 slot = (e.t - t0) / kSlotUs;
+        const int64 group = ((slot * 2 + e.camera) * blocksY + e.y / kBlock) * blocksX + e.x / kBlock;
+        const int64 cell = group * (kSlotUs / kCellUs) + ((e.t - t0) % kSlotUs) / kCellUs;
+        samples.push_back(Sample{ group, cell, disparity.at<float>(i), (float)u, (float)w });
+    }
+    smoothSpeeds(samples);
+    SlopeFit fit = SurfaceRegression(std::move(samples)).fit();
+    fit.offsetUs = offsetUs;
+    fit.meanConfidence = confidenceSum / std::max(1.0, matched);
+    return fit;
+}
+
+}  // namespace
+
+double estimateClockOffset(InputArray events, Size sensorSize, int minDisparity, int maxDisparity, double* uncertaintyUs)
+{
+    if (sensorSize.width <= 0 || sensorSize.height <= 0)
+        CV_Error_(Error::StsBadArg, ("estimateClockOffset: sensor %d x %d", sensorSize.width, sensorSize.height));
+    if (minDisparity < 0 || maxDisparity < minDisparity || maxDisparity >= sensorSize.width)
+        CV_Error_(Error::StsBadArg, ("estimateClockOffset: disparities %d..%d; expected 0 <= min <= max < the sensor width %d",
+                                     minDisparity, maxDisparity, sensorSize.width));
+    Mat left, right;
+    splitStereoEvents(events, left, right);
+    const std::vector<Event> l = toEventVector(left), r = toEventVector(right);
+    if (uncertaintyUs)
+        *uncertaintyUs = std::numeric_limits<double>::infinity();
+    if (l.empty() || r.empty())
+        return 0;
+    // The slope g(offset) is the residual offset, damped by how noisy the measured speeds are (a regression
+    // on a noisy regressor is flattened): secant steps find its root.
+    std::vector<SlopeFit> fits(1, slopeAt(l, r, sensorSize, minDisparity, maxDisparity, 0));
+    if (!fits[0].ok)
+        return 0;
+    // The first step assumes the damping typical of smoothed plane-fit flows; the secant then measures it.
+    double gain = 0.25;
+    double offset = clampOffset(-fits[0].slopeUs / gain);
+    for (int run = 1; run < kMaxMatcherRuns; run++)
+    {
+        const SlopeFit fit = slopeAt(l, r, sensorSize, minDisparity, maxDisparity, offset);
+        if (!fit.ok)
+            break;
+        fits.push_back(fit);
+        if (std::abs(fit.slopeUs) < std::max(20.0, 0.1 * fit.standardErrorUs))
+            break;
+        const SlopeFit& before = fits[fits.size() - 2];
+        const double measuredGain = (fit.slopeUs - before.slopeUs) / (fit.offsetUs - before.offsetUs);
+        if (measuredGain > 0.05 && measuredGain < 2)
+            gain = measuredGain;
+        offset = clampOffset(fit.offsetUs - fit.slopeUs / gain);
+        if (offset == fit.offsetUs)
+            break;
+    }
+    const SlopeFit* best = &fits[0];
+    for (const SlopeFit& f : fits)
+        if (std::abs(f.slopeUs) <= std::abs(best->slopeUs))
+            best = &f;
+    // How sure: the slope's standard error through the gain of g over every offset tried (a line through
+    // them all). Where a surface's disparity follows its speed for another reason (parts of a figure at
+    // slightly different depths swinging in turn, surfaces a block cannot tell apart), g hardly follows the
+    // offset: a low gain says so. And an offset that makes the matches less clear-cut than none is no
+    // correction.
+    double sumO = 0, sumG = 0, sumOO = 0, sumOG = 0;
+    for (const SlopeFit& f : fits)
+    {
+        sumO += f.offsetUs;
+        sumG += f.slopeUs;
+        sumOO += f.offsetUs * f.offsetUs;
+        sumOG += f.offsetUs * f.slopeUs;
+    }
+    const double k = (double)fits.size(), spread = sumOO - sumO * sumO / k;
+    const double overallGain = spread > 0 ? (sumOG - sumO * sumG / k) / spread : gain;
+    if (!(overallGain >= kMinGain) || std::abs(best->offsetUs) >= kMaxOffsetUs ||
+        best->meanConfidence < fits[0].meanConfidence - kConfidenceTolerance)
+        return 0;
+    if (uncertaintyUs)
+        *uncertaintyUs = best->standardErrorUs / std::min(overallGain, 1.0);
+    return best->offsetUs;
+}
+
+}  // namespace event
+}  // namespace cv

@@ -1,0 +1,68 @@
+// This file is part of OpenCV project.
+// It is subject to the license terms in the LICENSE file found in the top-level directory
+// of this distribution and at http://opencv.org/license.html.
+
+// estimateClockOffset(): a right clock moved by a known amount moves the estimate by as much; one object at
+// one speed says that it cannot tell.
+
+#include "test_precomp.hpp"
+
+namespace opencv_test { namespace {
+
+// The first @p untilUs of a built-in scene with the right camera's clock moved by @p clockUs more.
+std::vector<Event> sceneWithRightClock(const String& scene, double clockUs, double untilUs)
+{
+    Ptr<StereoEventSimulator> base = StereoEventSimulator::create(scene);
+    SimulatorSettings s = base->getSettings();
+    s.rightClockOffsetUs += clockUs;
+    Ptr<StereoEventSimulator> sim = StereoEventSimulator::create(base->getPlanes(), s);
+    std::vector<Event> events;
+    Mat truth;
+    sim->generate(untilUs, events, truth);
+    return events;
+}
+
+TEST(Event_ClockOffset, a_right_clock_moved_by_a_known_amount_moves_the_estimate_by_as_much)
+{
+    // Boxes slid to and fro: their speeds along the rows change, so an offset is told from a disparity. The
+    // scene's own offset (its clock, latencies and sensitivities together) is what the estimate at 0 is;
+    // moving the right clock by c must move the estimate by -c.
+    const Size size(240, 180);
+    double u0 = 0;
+    const double e0 = estimateClockOffset(sceneWithRightClock("boxes_fast_pair", 0, 2000000), size, 0, 40, &u0);
+    ASSERT_LT(u0, 1000) << "the scene's own offset is measurable";
+    for (double clock : { -10000.0, 10000.0 })
+    {
+        double u = 0;
+        const double e = estimateClockOffset(sceneWithRightClock("boxes_fast_pair", clock, 2000000), size, 0, 40, &u);
+        EXPECT_LT(u, 1000) << "clock moved by " << clock << " us";
+        EXPECT_NEAR(-clock, e - e0, 500) << "clock moved by " << clock << " us";
+    }
+}
+
+TEST(Event_ClockOffset, one_line_at_one_speed_cannot_tell_an_offset_from_a_disparity)
+{
+    // A vertical line moving at one speed: any offset shifts every disparity by one amount, as a depth would.
+    double uncertainty = 0;
+    const double e = estimateClockOffset(sceneWithRightClock("moving_line", 5000, 1000000), Size(240, 180), 0, 40, &uncertainty);
+    EXPECT_GT(uncertainty, 1000);
+    EXPECT_EQ(0, e) << "nothing to go by: no offset";
+}
+
+TEST(Event_ClockOffset, bad_arguments_are_refused_and_one_camera_gives_nothing)
+{
+    const std::vector<Event> events = sceneWithRightClock("plane", 0, 20000);
+    EXPECT_THROW(estimateClockOffset(events, Size(0, 180)), cv::Exception);
+    EXPECT_THROW(estimateClockOffset(events, Size(240, 180), 10, 5), cv::Exception);
+    EXPECT_THROW(estimateClockOffset(events, Size(240, 180), 0, 240), cv::Exception);
+    std::vector<Event> left;
+    for (const Event& e : events)
+        if (e.camera == CAMERA_LEFT)
+            left.push_back(e);
+    ASSERT_FALSE(left.empty());
+    double uncertainty = 0;
+    EXPECT_EQ(0, estimateClockOffset(left, Size(240, 180), 0, 40, &uncertainty));
+    EXPECT_TRUE(std::isinf(uncertainty));
+}
+
+}}  // namespace
