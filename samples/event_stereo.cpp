@@ -2,7 +2,7 @@
 // live stereo DAVIS pair, or the simulator's built-in scene; the main job of this project.
 //
 //   event_stereo [--input=FILE | --left=FILE --right=FILE | --live] [--calib=FILE] [--sensor=WxH]
-//                [--left-camera-value=0|1] [--one-based] [--right-time-offset-ms=MS] [--mode=coupled|decoupled|fixed|sgbm]
+//                [--left-camera-value=0|1] [--one-based] [--right-time-offset-ms=MS|auto] [--mode=coupled|decoupled|fixed|sgbm]
 //                [--min-disparity=PX] [--max-disparity=PX] [--frame-ms=MS] [--threads=N] [--no-csv]
 //                [--all-frames] [--output=DIR] [--set=NAME=VALUE,...] [--scene=NAME --duration-ms=MS]
 //                [--filter=NAME [--filter-set=NAME=VALUE,...]]
@@ -15,8 +15,9 @@
 // (--all-frames: every window),
 // disparity_histogram.png and summary.md (events/s, share with disparity and with lifetime, dominant
 // disparity, the quartiles of the left estimates' confidence, input events outside the sensor or going back
-// in time, the pair check, and errors against the ground truth when simulated). Progress, and warnings when the
-// pair's rows are off or its events line up outside the range or with the cameras exchanged, go to stderr.
+// in time, the right camera's clock against the left one's (estimated and applied by default), the pair
+// check, and errors against the ground truth when simulated). Progress, and warnings when the pair's rows are
+// off or its events line up outside the range or with the cameras exchanged, go to stderr.
 
 #include <opencv2/event.hpp>
 #include <opencv2/core/utils/filesystem.hpp>  // after a core header: it needs CV_EXPORTS
@@ -78,7 +79,7 @@ const char* const keys =
     "{no-csv            | false      | do not write events.csv}"
     "{all-frames        | false      | a PNG for every window, not a handful}"
     "{output            | output/event_stereo | output folder}"
-    "{scene             | boxes      | simulated scene when no input is given: boxes, boxes_fast, walking, walking_near, low_contrast (realistic), boxes_flicker (a flickering lamp); plane, two_planes, moving_line, faint_line, cluttered}"
+    "{scene             | boxes      | simulated scene when no input is given: boxes, boxes_fast, walking, walking_near, low_contrast (realistic), boxes_pair, boxes_fast_pair, walking_pair (as a real DAVIS240 pair records them), boxes_flicker (a flickering lamp); plane, two_planes, moving_line, faint_line, cluttered}"
     "{duration-ms       | 1000       | length of the simulated scene [ms]}"
     "{set               |            | matcher parameters NAME=VALUE, comma separated (e.g. uniquenessRatio=20,costWindow=11)}"
     "{filter            |            | a noise filter in front of the matcher: background_activity, trail, refractory, hot_pixels, anti_flicker}"

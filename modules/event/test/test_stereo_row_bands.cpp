@@ -98,8 +98,14 @@ TEST(StereoEventMatcher, row_bands_follow_the_rectified_rows)
     cal.validate();
     const RunOutputs one = runMatcher(packets, size, STEREO_COUPLED, 1, cal);
     int outside = 0;
-    for (size_t i = 2; i < one.packets.size(); i += 5)
+    // Each packet stores its outputs in runMatcher()'s order: disparity, lifetime, flags, depth, flow, confidence.
+    const size_t outputsPerPacket = 6, flagsOutput = 2;
+    ASSERT_EQ(0u, one.packets.size() % outputsPerPacket);
+    for (size_t i = flagsOutput; i < one.packets.size(); i += outputsPerPacket)
+    {
+        ASSERT_EQ(CV_32S, one.packets[i].type()) << "output " << i << " is a flags Mat";
         outside += countNonZero((one.packets[i] & STEREO_OUTSIDE) != 0);
+    }
     EXPECT_GT(outside, 0) << "the shift must push some events out";
     EXPECT_EQ(differingOutputs(one, runMatcher(packets, size, STEREO_COUPLED, 4, cal)), 0);
 }

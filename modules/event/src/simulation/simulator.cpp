@@ -175,7 +175,8 @@ public:
         }
         // A right clock behind the shared one stamps events earlier than they fire: simulate far enough ahead
         // that every event stamped before untilUs exists.
-        const double lead = std::max(0.0, -s_.rightClockOffsetUs) + std::max(0.0, -s_.rightClockDriftPpm * 1e-6 * untilUs) + 1;
+        const double behind = std::max(0.0, -s_.rightClockOffsetUs) + std::max(0.0, -s_.rightClockDriftPpm * 1e-6 * untilUs);
+        const double lead = behind > 0 ? behind + 1 : 0.0;  // + 1: the restamping rounds
         while (t_ < untilUs + lead)
             step();
         // Hand out what is before untilUs; events after it wait for the next call, so the output does not
