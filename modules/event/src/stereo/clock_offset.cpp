@@ -291,9 +291,12 @@ double estimateClockOffset(InputArray events, Size sensorSize, int minDisparity,
         if (std::abs(fit.slopeUs) < std::max(20.0, 0.1 * fit.standardErrorUs))
             break;
         const SlopeFit& before = fits[fits.size() - 2];
-        const double measuredGain = (fit.slopeUs - before.slopeUs) / (fit.offsetUs - before.offsetUs);
-        if (measuredGain > 0.05 && measuredGain < 2)
-            gain = measuredGain;
+        if (std::abs(fit.offsetUs - before.offsetUs) >= 1)
+        {
+            const double measuredGain = (fit.slopeUs - before.slopeUs) / (fit.offsetUs - before.offsetUs);
+            if (measuredGain > 0.05 && measuredGain < 2)
+                gain = measuredGain;
+        }
         offset = clampOffset(fit.offsetUs - fit.slopeUs / gain);
         if (offset == fit.offsetUs)
             break;
