@@ -12,14 +12,7 @@ namespace opencv_test { namespace {
 // The first @p untilUs of a built-in scene with the right camera's clock moved by @p clockUs more.
 std::vector<Event> sceneWithRightClock(const String& scene, double clockUs, double untilUs)
 {
-    Ptr<StereoEventSimulator> base = StereoEventSimulator::create(scene);
-    SimulatorSettings s = base->getSettings();
-    s.rightClockOffsetUs += clockUs;
-    Ptr<StereoEventSimulator> sim = StereoEventSimulator::create(base->getPlanes(), s);
-    std::vector<Event> events;
-    Mat truth;
-    sim->generate(untilUs, events, truth);
-    return events;
+    return simulateChangedScene(scene, [&](SimulatorSettings& s) { s.rightClockOffsetUs += clockUs; }, untilUs);
 }
 
 TEST(Event_ClockOffset, a_right_clock_moved_by_a_known_amount_moves_the_estimate_by_as_much)

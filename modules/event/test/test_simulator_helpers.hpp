@@ -65,20 +65,30 @@ inline LeftCameraEvents generateLeftCamera(cv::event::StereoEventSimulator& sim,
     return run;
 }
 
+/** The first @p untilUs of a built-in scene (both cameras' events), with its settings changed by
+@p change (called with the scene's SimulatorSettings) first. */
+template <typename SettingsChange>
+inline std::vector<cv::event::Event> simulateChangedScene(const cv::String& scene, SettingsChange change, double untilUs)
+{
+    cv::Ptr<cv::event::StereoEventSimulator> base = cv::event::StereoEventSimulator::create(scene);
+    cv::event::SimulatorSettings s = base->getSettings();
+    change(s);
+    cv::Ptr<cv::event::StereoEventSimulator> sim = cv::event::StereoEventSimulator::create(base->getPlanes(), s);
+    std::vector<cv::event::Event> ev;
+    cv::Mat gt;
+    sim->generate(untilUs, ev, gt);
+    return ev;
+}
+
 /** The first @p untilUs of a built-in scene with the right camera's rows moved by the simulator's
 rightRowOffset / rightRollRad (both cameras' events). */
 inline std::vector<cv::event::Event> misalignedScene(const cv::String& scene, double rowOffset, double roll,
                                                      double untilUs = 200000)
 {
-    cv::Ptr<cv::event::StereoEventSimulator> ideal = cv::event::StereoEventSimulator::create(scene);
-    cv::event::SimulatorSettings s = ideal->getSettings();
-    s.rightRowOffset = rowOffset;
-    s.rightRollRad = roll;
-    cv::Ptr<cv::event::StereoEventSimulator> sim = cv::event::StereoEventSimulator::create(ideal->getPlanes(), s);
-    std::vector<cv::event::Event> ev;
-    cv::Mat gt;
-    sim->generate(untilUs, ev, gt);
-    return ev;
+    return simulateChangedScene(scene, [&](cv::event::SimulatorSettings& s) {
+        s.rightRowOffset = rowOffset;
+        s.rightRollRad = roll;
+    }, untilUs);
 }
 
 }  // namespace opencv_test

@@ -31,7 +31,7 @@ double clampOffset(double offsetUs)
     return std::max(-kMaxOffsetUs, std::min(kMaxOffsetUs, offsetUs));
 }
 
-// One matched event: its block and half second, its disparity, its edge's speed along the row u and the
+// One matched event: its block and ten seconds (its group), its disparity, its edge's speed along the row u and the
 // row-offset regressor w (how far a row shift moves the edge along the row).
 struct Sample
 {
@@ -125,8 +125,8 @@ public:
     }
 
 private:
-    // Fits the kept samples; sets residuals_ and standardError_ (of the u slope, clustered by block and half
-    // second, as neighbouring events share their matches).
+    // Fits the kept samples; sets residuals_ and standardError_ (of the u slope, clustered by group, as
+    // neighbouring events share their matches).
     bool solve(const std::vector<char>& kept, Vec2d& beta)
     {
         const size_t n = samples_.size();

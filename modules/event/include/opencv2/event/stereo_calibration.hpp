@@ -108,24 +108,27 @@ Two cameras whose clocks disagree by tau (a software synchronisation, different 
 that moves along the rows at u px/s where it was tau earlier or later: matched at the same timestamp, its
 disparity comes out u tau too large. An edge's speed along the row is u = |f|^2 / f_x for its normal flow f,
 so an offset shows as disparities that grow with u on one surface. The events are matched (StereoEventMatcher,
-STEREO_COUPLED, defaults); for each camera, 8 x 8 px block and half second, the confident estimates are cut
+STEREO_COUPLED, defaults); for each camera, 8 x 8 px block and ten seconds, the confident estimates are cut
 into surfaces where their disparities are more than a pixel apart, and the disparity is regressed on u within
-them (a second regressor, f_y / f_x, takes up a residual row offset, which moves oblique edges along the row).
-The right camera is restamped by the offset that makes the slope zero (secant steps), and the events are
-matched again, up to five times.
+them (u taken as the median of the block's estimates over 50 ms, as one plane fit's flow is too noisy; a
+second regressor, f_y / f_x, takes up a residual row offset, which moves oblique edges along the row). The
+right camera is restamped by the offset that makes the slope zero (secant steps, within +-20 ms), and the
+events are matched again, up to five times.
 
 An offset can only be told from a disparity where the speed along the rows varies on one surface: objects
 that speed up, slow down or turn, edges of several directions on an object moving with a vertical component,
 rotation. Where one object moves at one speed along the rows, an offset shifts every disparity by one amount,
 exactly as a different depth would, and nothing in the events tells them apart: @p uncertaintyUs is then large
-(infinite when no surface has speeds to compare) and the offset should not be applied.
+and the offset should not be applied. The estimate is refused (0, infinite uncertainty) where the slope hardly
+follows the restamping, where it would lie at the +-20 ms end, and where the matches at the estimate are less
+clear-cut (mean confidence) than with the clocks as given.
 @param events stereo events (camera column), time-ordered and rectified, any form getEventMat() accepts; a few
 seconds of a recording with motion is enough (the events are matched up to five times).
 @param sensorSize the sensor size.
 @param minDisparity, maxDisparity the disparity range searched.
-@param uncertaintyUs optional output: the standard error of the offset [us] (clustered by block and half
-second). Above about 1000 us the events do not tell an offset from a disparity.
-@return the offset [us]; 0 when nothing could be compared.
+@param uncertaintyUs optional output: the standard error of the offset [us] (clustered by block and ten
+seconds). Above about 1000 us the events do not tell an offset from a disparity.
+@return the offset [us]; 0 when nothing could be compared or the estimate is refused.
 */
 CV_EXPORTS_W double estimateClockOffset(InputArray events, Size sensorSize, int minDisparity = 0, int maxDisparity = 40,
                                         CV_OUT double* uncertaintyUs = 0);
