@@ -340,11 +340,15 @@ ClockCheck checkClocks(Options o)
     const Size size = probe.sensorSize();
     if (size.empty())
         return check;  // the run itself says what is missing
+    // The events the matcher will see: through the run's noise filter, if any.
+    Ptr<EventFilter> filter = createSampleFilter(o.filter, o.filterSettings, size);
     std::vector<Event> events, packet;
-    Mat truth;
+    Mat truth, keepMask;
     double windowEnd = 0;
     while (probe.next(packet, truth, windowEnd))
     {
+        if (filter)
+            filter->filter(packet, packet, keepMask);
         events.insert(events.end(), packet.begin(), packet.end());
         const int64 span = events.empty() ? 0 : events.back().t - events.front().t;
         if ((span > 3000000 && events.size() >= 20000) || span > 20000000 || events.size() >= 300000)
@@ -370,7 +374,7 @@ ClockCheck checkClocks(Options o)
         check.result += ": applied";
     }
     else
-        check.result += cv::format(": not applied, the events do not pin it down (uncertainty above %.0f ms: one object at one speed along the rows, or surfaces whose speeds follow their depth)", kSampleMaxClockUncertaintyUs * 1e-3);
+        check.result += cv::format(": not applied, the events do not pin it down (uncertainty above %.1f ms: one object at one speed along the rows, or surfaces whose speeds follow their depth)", kSampleMaxClockUncertaintyUs * 1e-3);
     return check;
 }
 

@@ -15,9 +15,9 @@ constexpr double kSampleMinLineUpScore = 0.1;
 /** Below this score (cv::event::estimateRowAlignment()) the events say too little about the rows to act on. */
 constexpr double kSampleMinRowScore = 0.4;
 
-/** Above this uncertainty (cv::event::estimateClockOffset()) the events do not tell a clock offset from a
-    disparity: the offset is not applied. */
-constexpr double kSampleMaxClockUncertaintyUs = 1000;
+/** Above this uncertainty (cv::event::estimateClockOffset()) the events do not pin a clock offset down well
+    enough to apply it (the half millisecond that moves an edge at 200 px/s by a tenth of a pixel). */
+constexpr double kSampleMaxClockUncertaintyUs = 500;
 
 /** The option that exchanges the cameras: of two files (--left/--right), of a text file's camera column, or of
     any other recording of both cameras. */

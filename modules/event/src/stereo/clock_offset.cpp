@@ -105,10 +105,11 @@ public:
                 return result;
             if (pass == 2)
                 break;
-            // Trim what no surface explains (a wrong match, a surface cut wrongly): beyond 3 robust sigmas.
+            // Trim what no surface explains (a wrong match, a surface cut wrongly): beyond 3 robust sigmas of the
+            // samples on a surface (the others, of infinite residual, go as well).
             std::vector<float> absResidual;
             for (size_t i = 0; i < samples_.size(); i++)
-                if (kept[i])
+                if (kept[i] && std::isfinite(residuals_[i]))
                     absResidual.push_back(std::abs(residuals_[i]));
             if (absResidual.empty())
                 return result;

@@ -127,7 +127,7 @@ seconds of a recording with motion is enough (the events are matched up to five 
 @param sensorSize the sensor size.
 @param minDisparity, maxDisparity the disparity range searched.
 @param uncertaintyUs optional output: the standard error of the offset [us] (clustered by block and ten
-seconds). Above about 1000 us the events do not tell an offset from a disparity.
+seconds). Above a few hundred us the events hardly tell an offset from a disparity.
 @return the offset [us]; 0 when nothing could be compared or the estimate is refused.
 */
 CV_EXPORTS_W double estimateClockOffset(InputArray events, Size sensorSize, int minDisparity = 0, int maxDisparity = 40,
