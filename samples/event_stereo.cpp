@@ -1,7 +1,7 @@
 // event_stereo: per-event stereo disparity, depth and lifetime (StereoEventMatcher) on a stereo recording, a
 // live stereo DAVIS pair, or the simulator's built-in scene; the main job of this project.
 //
-//   event_stereo [--input=FILE | --left=FILE --right=FILE | --live] [--calib=FILE] [--sensor=WxH]
+//   event_stereo [--input=FILE | --left=FILE --right=FILE | --live [--live-ms=MS]] [--record=FILE] [--calib=FILE] [--sensor=WxH]
 //                [--left-camera-value=0|1] [--one-based] [--right-time-offset-ms=MS|auto] [--mode=coupled|decoupled|fixed|sgbm]
 //                [--min-disparity=PX] [--max-disparity=PX] [--frame-ms=MS] [--threads=N] [--no-csv]
 //                [--all-frames] [--output=DIR] [--set=NAME=VALUE,...] [--scene=NAME --duration-ms=MS]
@@ -48,7 +48,7 @@ namespace {
 struct Options
 {
     // Defaults: the keys below.
-    std::string input, left, right, calib, output, scene, mode, settings, filter, filterSettings;
+    std::string input, left, right, calib, output, scene, mode, settings, filter, filterSettings, record;
     bool live = false, csv = true, allFrames = false, oneBased = false;
     Size sensor;
     int leftCameraValue = 0, minDisparity = 0, maxDisparity = 0;
@@ -56,7 +56,7 @@ struct Options
     // little faster wherever the events crowd around the bands' boundary (a figure or an object in the middle
     // of the view, most real scenes), so one thread unless asked.
     int threads = 1;
-    double frameMs = 0, durationMs = 0, rightTimeOffsetMs = 0;
+    double frameMs = 0, durationMs = 0, rightTimeOffsetMs = 0, liveMs = 0;
     bool estimateClock = true;  // --right-time-offset-ms=auto: estimateClockOffset() on the first seconds
 };
 
@@ -66,6 +66,8 @@ const char* const keys =
     "{left              |            | the left camera's recording (with --right)}"
     "{right             |            | the right camera's recording (with --left)}"
     "{live              | false      | a live stereo DAVIS pair (davis:0 left, davis:1 right)}"
+    "{live-ms           | 0          | stop a live run after this much camera time [ms]; 0: until the cameras stop}"
+    "{record            |            | also write the events as read (before --filter) to this file: .aedat4, else text with a camera column}"
     "{calib             |            | stereo calibration (FileStorage: K1 D1 K2 D2 R T, image size)}"
     "{sensor            |            | sensor size WxH or a name (DVS128, DAVIS240, DAVIS346) when the format has none}"
     "{left-camera-value | 0          | the camera column's value that means left, in text recordings}"
@@ -96,6 +98,8 @@ bool parse(int argc, char** argv, Options& o)
     o.left = cmd.get<std::string>("left");
     o.right = cmd.get<std::string>("right");
     o.live = cmd.has("live");
+    o.liveMs = cmd.get<double>("live-ms");
+    o.record = cmd.get<std::string>("record");
     o.calib = cmd.get<std::string>("calib");
     if (cmd.has("sensor"))
         o.sensor = parseSensorSize(cmd.get<std::string>("sensor"));
@@ -163,7 +167,10 @@ public:
         cap_.set(EVENT_CAP_PROP_SENSOR_HEIGHT, o.sensor.height);
         cap_.set(EVENT_CAP_PROP_WINDOW_US, o.frameMs * 1000);
         if (o.live)
+        {
             cap_.openStereo("davis:0", "davis:1");
+            liveEndUs_ = o.liveMs * 1000;
+        }
         else if (!o.left.empty())
             cap_.openStereo(o.left, o.right);
         else
@@ -189,9 +196,11 @@ public:
             sim_->generate(windowEnd, events, truth);
             return true;
         }
+        if (liveEndUs_ > 0 && lastWindowEnd_ >= liveEndUs_)
+            return false;
         if (!cap_.read(events))
             return false;
-        windowEnd = cap_.get(EVENT_CAP_PROP_POS_US);
+        windowEnd = lastWindowEnd_ = cap_.get(EVENT_CAP_PROP_POS_US);
         touchesZero_ = touchesZero_ || touchesColumnOrRowZero(events);
         return true;
     }
@@ -215,6 +224,7 @@ private:
     Ptr<StereoEventSimulator> sim_;
     EventCapture cap_;
     double durationUs_ = 0, windowUs_ = 0;
+    double liveEndUs_ = 0, lastWindowEnd_ = 0;
     std::string name_;
     bool touchesZero_ = false;
 };
@@ -586,8 +596,16 @@ int main(int argc, char** argv)
         char line[160];
         const std::string swapAdvice = sampleCameraSwapAdvice(!opt.left.empty(), source.isText(), opt.leftCameraValue);
         PairCheck pairCheck(size, opt.minDisparity, opt.maxDisparity, swapAdvice, opt.calib);
+        EventWriter recorder;
+        if (!opt.record.empty())
+        {
+            recorder.set(EVENT_WRITER_PROP_STEREO, 1);
+            recorder.open(opt.record, size);
+        }
         while (source.next(packet, truth, windowEnd))
         {
+            if (recorder.isOpened())
+                recorder.write(packet);
             if (filter)
             {
                 // The matcher sees the kept events; the ground truth follows them.

@@ -3,7 +3,8 @@
 # UndefinedBehaviorSanitizer (gcc), then the unit tests (all but the long accuracy runs, below) and the samples
 # run under them. Any memory error, leak or undefined
 # behaviour aborts the run. Then the library and opencv_test_event built with ThreadSanitizer (build-tsan/),
-# running StereoEventMatcher's row bands on several threads: any data race aborts the run. The build dir is inside the clone (build-sanitizers/, ignored by git) and ccache
+# running StereoEventMatcher's row bands on several threads and the live cameras' threads on their fake USB:
+# any data race aborts the run. The build dir is inside the clone (build-sanitizers/, ignored by git) and ccache
 # runs with CCACHE_BASEDIR = the clone, so a fresh clone compiles from the cache.
 #
 #   test/sanitizers.sh <opencv-source-dir> [build-dir]
@@ -90,9 +91,11 @@ cmake -S "$repo" -B "$tsan" "${generator[@]}" "${launcher[@]}" -DCMAKE_BUILD_TYP
   -DOPENCV_EVENT_OPENCV_SOURCE_DIR="$src" -DOPENCV_EVENT_BUILD_CONTRIB_TEST=OFF -DOPENCV_EVENT_BUILD_PERF_TESTS=OFF \
   > "$tsan.configure.log" 2>&1 || { tail -40 "$tsan.configure.log"; exit 1; }
 cmake --build "$tsan" --target opencv_test_event > "$tsan.build.log" 2>&1 || { tail -60 "$tsan.build.log"; exit 1; }
-echo "== sanitizers: StereoEventMatcher's row bands under TSan"
+echo "== sanitizers: StereoEventMatcher's row bands and the live cameras' threads under TSan"
 # Three of the eight row-band tests (a calibration that moves rows, on 4 threads; a packet cut short by a bad
 # event; cluttered COUPLED on 2, 3 and 7 threads): under TSan each runs 20-40 times slower, and these three
-# take every path of the bands (waits both ways, expiries, outside events, a failing packet).
-TSAN_OPTIONS=halt_on_error=1 "$tsan/modules/event/opencv_test_event" --gtest_filter='StereoEventMatcher.row_bands_*:StereoEventMatcher_RowBands.give_the_results_of_one_thread_bit_for_bit/3'
+# take every path of the bands (waits both ways, expiries, outside events, a failing packet). The live path on
+# its fakes: USB callbacks on a control request's thread while the reader thread reads, the reader threads of
+# a stereo pair, their clock arming and shutdown (a few seconds).
+TSAN_OPTIONS=halt_on_error=1 "$tsan/modules/event/opencv_test_event" --gtest_filter='StereoEventMatcher.row_bands_*:StereoEventMatcher_RowBands.give_the_results_of_one_thread_bit_for_bit/3:Event_UsbLinkDevice.*:Event_Capture_Davis.*'
 echo "== sanitizers: clean"

@@ -68,14 +68,19 @@ struct WriteLog
     }
 };
 
-/** One scripted camera. Register reads come from `registers`; bulk reads replay `bulk`; a timestamp-reset
-pulse appends a reset word and then `afterReset` to its stream and to that of its slave. */
+/** One scripted camera. Register reads come from `registers` (writes go there too); bulk reads replay `bulk`;
+a timestamp-reset pulse while the multiplexer runs appends a reset word and then `afterReset` to its stream
+and to that of its slave. Like the FPGA, a camera whose multiplexer is stopped latches a reset instead
+(`latchedReset`: a slave has one from its power-up) and sends it as its first word at the next start,
+followed by `beforeSync` (what it records until the master's pulse). */
 struct FakeCamera
 {
     int index = 0;
     UsbDeviceId id;
-    std::map<std::pair<int, int>, uint32_t> registers;
-    std::vector<uint8_t> afterReset;
+    std::map<std::pair<int, int>, uint32_t> registers;  // under `mutex` once a capture is open
+    std::vector<uint8_t> afterReset, beforeSync;
+    bool latchedReset = false;
+    bool muxRunning = false;
     FakeCamera* slave = nullptr;
     bool unplugWhenDrained = false;
     std::string openError;
@@ -125,6 +130,44 @@ struct FakeCamera
         std::lock_guard<std::mutex> lock(mutex);
         bulk.emplace_back(s, std::vector<uint8_t>());
     }
+    /** The reset pulse reaching this camera's FPGA. */
+    void resetPulse()
+    {
+        {
+            std::lock_guard<std::mutex> lock(mutex);
+            if (!muxRunning)
+            {
+                latchedReset = true;
+                return;
+            }
+        }
+        timestampReset();
+    }
+    /** The multiplexer's run bit written. */
+    void setMuxRunning(bool run)
+    {
+        bool sendLatched;
+        {
+            std::lock_guard<std::mutex> lock(mutex);
+            sendLatched = run && !muxRunning && latchedReset;
+            muxRunning = run;
+            if (sendLatched)
+                latchedReset = false;
+        }
+        if (sendLatched)
+        {
+            WordStream reset;
+            reset.word(timestampResetWord());
+            std::vector<uint8_t> bytes = reset.bytes;
+            bytes.insert(bytes.end(), beforeSync.begin(), beforeSync.end());
+            pushData(bytes);
+        }
+    }
+    void setRegister(int module, int param, uint32_t value)
+    {
+        std::lock_guard<std::mutex> lock(mutex);
+        registers[std::make_pair(module, param)] = value;
+    }
     void timestampReset()
     {
         WordStream reset;
@@ -152,7 +195,7 @@ inline Ptr<FakeCamera> makeDavis(int index, int chip, int columns, int rows, boo
         { { 6, 0 }, 18 }, { { 6, 7 }, 1 }, { { 6, 1 }, (uint32_t)chip }, { { 6, 2 }, master ? 1u : 0u },
         { { 6, 3 }, 104 }, { { 6, 5 }, 80 }, { { 6, 6 }, 1000 },
         { { 1, 0 }, (uint32_t)columns }, { { 1, 1 }, (uint32_t)rows }, { { 1, 2 }, invertXY ? 4u : 0u },
-        { { 1, 10 }, 1 }, { { 1, 30 }, 1 }, { { 1, 40 }, 1 },
+        { { 1, 10 }, 1 }, { { 1, 30 }, 1 }, { { 1, 40 }, 1 }, { { 1, 50 }, 1 }, { { 1, 60 }, 1 },
     };
     return c;
 }
@@ -172,6 +215,9 @@ public:
         {
             ASSERT_EQ(4u, size);
             c_->log->add({ c_->index, value, index, bigEndian(data) });
+            c_->setRegister(value, index, bigEndian(data));
+            if (value == 0 && index == 0)
+                c_->setMuxRunning(bigEndian(data) != 0);
         }
         else if (request == 0xC2)
         {
@@ -185,9 +231,9 @@ public:
             }
             if (pulse)
             {
-                c_->timestampReset();
+                c_->resetPulse();
                 if (c_->slave)
-                    c_->slave->timestampReset();  // the sync cable carries the pulse
+                    c_->slave->resetPulse();  // the sync cable carries the pulse
             }
         }
         else
@@ -201,8 +247,13 @@ public:
         ASSERT_EQ(0xC0, requestType);
         ASSERT_EQ(0xBF, request);
         ASSERT_EQ(4u, size);
-        const auto it = c_->registers.find(std::make_pair((int)value, (int)index));
-        const uint32_t v = it == c_->registers.end() ? 0 : it->second;
+        uint32_t v = 0;
+        {
+            std::lock_guard<std::mutex> lock(c_->mutex);
+            const auto it = c_->registers.find(std::make_pair((int)value, (int)index));
+            if (it != c_->registers.end())
+                v = it->second;
+        }
         data[0] = (uint8_t)(v >> 24);
         data[1] = (uint8_t)(v >> 16);
         data[2] = (uint8_t)(v >> 8);
@@ -215,6 +266,7 @@ public:
         c_->log->call(c_->index, cv::format("startBulkIn 0x%02X %d x %d", endpoint, transfers, bytes));
     }
     void stopBulkIn() CV_OVERRIDE { c_->log->call(c_->index, "stopBulkIn"); }
+    String streamEndReason() const CV_OVERRIDE { return String(); }
 
     UsbBulkStatus readBulk(std::vector<uint8_t>& data, int timeoutMs) CV_OVERRIDE
     {

@@ -57,6 +57,9 @@ TEST(Event_Capture_Davis, davis346_identified_configured_started_and_stopped)
 {
     FakeUsb usb;
     Ptr<FakeCamera> cam = usb.add(5 /* DAVIS346B */, 346, 260);
+    cam->registers[{ 1, 51 }] = 1;  // left by an earlier program: skip every 2nd event, suppress OFF events
+    cam->registers[{ 1, 52 }] = 2;
+    cam->registers[{ 1, 62 }] = 1;
     // Events from before the capture's clock reset must not come out; those after it must, exactly.
     cam->pushData(encodeEvents(randomEvents(300, 346, 260, 1, 20000)));
     const std::vector<Event> truth = randomEvents(5000, 346, 260, 2);
@@ -87,6 +90,21 @@ TEST(Event_Capture_Davis, davis346_identified_configured_started_and_stopped)
     EXPECT_EQ(80000u, (cfg[{ 9, 1 }]));    // early packet: 8 x 125 us at 80 MHz, in clock cycles
     EXPECT_EQ(0u, (cfg[{ 2, 4 }]));        // APS off
     EXPECT_EQ(-1, usb.log->find(0, 5, 139, 0));  // a DAVIS240A/B field: never written to a 346
+    // Every FPGA filter back to its default, whatever the previous program left (the fake starts with the skip
+    // filter on and OFF events suppressed); unused hot-pixel slots point outside the array, row then column.
+    {
+        std::lock_guard<std::mutex> lock(cam->mutex);
+        EXPECT_EQ(0u, (cam->registers[{ 1, 51 }]));
+        EXPECT_EQ(5u, (cam->registers[{ 1, 52 }]));
+        EXPECT_EQ(0u, (cam->registers[{ 1, 62 }]));
+    }
+    EXPECT_NE(-1, usb.log->find(0, 1, 61, 0));
+    EXPECT_NE(-1, usb.log->find(0, 1, 63, 0));
+    for (int p = 11; p <= 26; p += 2)
+    {
+        EXPECT_EQ(260u, (cfg[{ 1, p }])) << "hot-pixel row " << p;
+        EXPECT_EQ(346u, (cfg[{ 1, p + 1 }])) << "hot-pixel column " << p + 1;
+    }
 
     // Start sequence: everything off, chip on, then USB, timestamps, mux, DVS; nothing else runs.
     int at = usb.log->find(0, 1, 3, 0);
@@ -175,8 +193,15 @@ TEST(Event_Capture_Davis, unusable_cameras_are_refused_with_the_reason)
     }
     struct Case { std::function<void(FakeCamera&)> spoil; std::string source, message; };
     const std::vector<Case> cases = {
-        { [](FakeCamera& c) { c.registers[{ 6, 0 }] = 17; }, "davis:0", "FPGA logic version 17 is too old" },
+        { [](FakeCamera& c) { c.registers[{ 6, 0 }] = 17; }, "davis:0", "FPGA logic version 17 patch 1 is too old" },
+        { [](FakeCamera& c) { c.registers[{ 6, 0 }] = 19; }, "davis:0", "FPGA logic version 19 patch 1 is newer than supported" },
+        { [](FakeCamera& c) { c.registers[{ 6, 7 }] = 0; }, "davis:0", "FPGA logic version 18 patch 0 is too old" },
         { [](FakeCamera& c) { c.id.firmwareVersion = 5; }, "davis:0", "USB firmware version 5 is too old" },
+        { [](FakeCamera& c) { c.id.firmwareVersion = 7; }, "davis:0", "USB firmware version 7 is newer than supported" },
+        { [](FakeCamera& c) { c.registers[{ 6, 1 }] = 6; }, "davis:0", "chip DAVIS640 (id 6) is not supported" },
+        { [](FakeCamera& c) { c.registers[{ 6, 1 }] = 7; }, "davis:0", "chip DAVIS640H (id 7) is not supported" },
+        { [](FakeCamera& c) { c.registers[{ 6, 1 }] = 8; }, "davis:0", "chip DAVIS208 (id 8) is not supported" },
+        { [](FakeCamera& c) { c.registers[{ 6, 1 }] = 42; }, "davis:0", "chip unknown DAVIS (id 42) is not supported" },
         { [](FakeCamera& c) { c.openError = "LIBUSB_ERROR_BUSY"; }, "davis:0", "LIBUSB_ERROR_BUSY" },
         { [](FakeCamera& c) { c.registers[{ 1, 0 }] = 0; }, "davis:0", "0 x 260 DVS array" },
         { [](FakeCamera&) {}, "davis:3", "davis:3: no such DAVIS camera; connected: 00000490 (usb 001:010)" },
@@ -305,6 +330,121 @@ TEST(Event_Capture_Davis, stereo_pair_shares_the_master_clock)
     EXPECT_TRUE(cap.set(EVENT_CAP_PROP_DEVICE_TIMESTAMP_RESET, 1));
     EXPECT_EQ(2, left->resets);
     EXPECT_EQ(2, right->resets);
+}
+
+TEST(Event_Capture_Davis, stereo_pair_with_a_reset_latched_by_the_slave_starts_both_clocks_at_zero)
+{
+    // The slave's FPGA latched a reset at power-up (slave detection) and sends it as its first word when it
+    // starts, about 0.3 s before the master's pulse: taken for the pulse, it would set the slave's clock that
+    // far ahead of the master's.
+    FakeUsb usb;
+    Ptr<FakeCamera> left = usb.add(5, 346, 260, false, false);  // slave
+    Ptr<FakeCamera> right = usb.add(5, 346, 260, false, true);  // master
+    right->slave = left.get();
+    left->latchedReset = true;
+    left->beforeSync = encodeWithClock(randomEvents(500, 346, 260, 9));
+    const std::vector<Event> l = randomEvents(3000, 346, 260, 10), r = randomEvents(3000, 346, 260, 11);
+    left->afterReset = encodeWithClock(l);
+    right->afterReset = encodeWithClock(r);
+
+    EventCapture cap;
+    ASSERT_TRUE(cap.openStereo("davis:0", "davis:1"));
+    const std::vector<Event> merged = readEvents(cap, l.size() + r.size());
+    std::vector<Event> expected;
+    mergeStereoEvents(l, r, expected);
+    EXPECT_EQ(expected, merged);  // both clocks from 0 at the pulse, to the microsecond
+    EXPECT_EQ(500, cap.get(EVENT_CAP_PROP_SKIPPED));  // what the slave recorded on its stale clock
+}
+
+/** Events of one camera at the given device times (from its last reset), each followed by nothing else. */
+std::vector<Event> eventsAt(const std::vector<int64>& times, int x)
+{
+    std::vector<Event> ev;
+    for (int64 t : times)
+        ev.emplace_back(t, x, 7, 1);
+    return ev;
+}
+
+TEST(Event_Capture_Davis, a_reset_mid_stream_gives_both_cameras_the_same_new_epoch)
+{
+    // A reset nobody asked for (a sync glitch, the FPGA's reset after a long USB stall) reaches both cameras
+    // at once, at device time 130 ms. The left camera's last timestamp word before it is 128.3 ms (an event),
+    // the right one's 98.3 ms (a wrap word: it saw nothing since). Each re-based on its own last word, the
+    // two clocks would be 30 ms apart from then on.
+    FakeUsb usb;
+    Ptr<FakeCamera> left = usb.add(5, 346, 260, false, true);    // master
+    Ptr<FakeCamera> right = usb.add(5, 346, 260, false, false);  // slave
+    left->slave = right.get();
+    const std::vector<Event> lBefore = eventsAt({ 1000, 50000, 128304 }, 10);
+    const std::vector<Event> rBefore = eventsAt({ 2000, 60000 }, 20);
+    std::vector<uint8_t> lBytes = encodeEvents(lBefore), rBytes = encodeEvents(rBefore);
+    WordStream rClock;
+    rClock.word(wrapWord(1)).word(wrapWord(1));  // a running camera's clock words: 65.536 and 98.304 ms
+    rBytes.insert(rBytes.end(), rClock.bytes.begin(), rClock.bytes.end());
+    const std::vector<Event> lAfter = eventsAt({ 500, 20000, 40000 }, 11), rAfter = eventsAt({ 600, 20100, 40100 }, 21);
+    WordStream reset;
+    reset.word(timestampResetWord());
+    for (auto* side : { &lBytes, &rBytes })
+        side->insert(side->end(), reset.bytes.begin(), reset.bytes.end());
+    std::vector<uint8_t> lTail = encodeEvents(lAfter), rTail = encodeEvents(rAfter);
+    appendClockWords(lTail, 70000);
+    appendClockWords(rTail, 70000);
+    lBytes.insert(lBytes.end(), lTail.begin(), lTail.end());
+    rBytes.insert(rBytes.end(), rTail.begin(), rTail.end());
+    left->afterReset = lBytes;
+    right->afterReset = rBytes;
+
+    EventCapture cap;
+    ASSERT_TRUE(cap.openStereo("davis:0", "davis:1"));
+    const std::vector<Event> merged = readEvents(cap, 11);
+    ASSERT_EQ(11u, merged.size());
+    std::vector<int64> epochs[2];  // delivered time - device time, of each camera's events after the reset
+    int64 lastBefore = 0;
+    for (const Event& e : merged)
+        if (e.x == 10 || e.x == 20)
+            lastBefore = std::max(lastBefore, (int64)e.t);
+        else if (e.x == 11 && epochs[0].size() < lAfter.size())
+            epochs[0].push_back(e.t - lAfter[epochs[0].size()].t);
+        else if (e.x == 21 && epochs[1].size() < rAfter.size())
+            epochs[1].push_back(e.t - rAfter[epochs[1].size()].t);
+    ASSERT_EQ(3u, epochs[0].size());
+    ASSERT_EQ(3u, epochs[1].size());
+    for (int k = 0; k < 3; k++)
+    {
+        EXPECT_EQ(epochs[0][0], epochs[0][k]);
+        EXPECT_EQ(epochs[0][0], epochs[1][k]) << "the two cameras took different epochs at the reset";
+    }
+    EXPECT_EQ(128304, lastBefore);
+    EXPECT_GE(epochs[0][0], 128304);  // time never goes back
+    EXPECT_LE(epochs[0][0], 128304 + 32768 + 1000);
+}
+
+TEST(Event_Capture_Davis, a_reset_that_finds_the_sync_cable_gone_ends_the_stereo_stream_saying_so)
+{
+    FakeUsb usb;
+    Ptr<FakeCamera> left = usb.add(5, 346, 260, false, true);    // master
+    Ptr<FakeCamera> right = usb.add(5, 346, 260, false, false);  // slave
+    left->slave = right.get();
+    const std::vector<Event> l = randomEvents(200, 346, 260, 12), r = randomEvents(200, 346, 260, 13);
+    left->afterReset = encodeWithClock(l);
+    right->afterReset = encodeWithClock(r);
+    EventCapture cap;
+    ASSERT_TRUE(cap.openStereo("davis:0", "davis:1"));
+    EXPECT_EQ(l.size() + r.size(), readEvents(cap, l.size() + r.size()).size());
+    // The cable is pulled: the slave's FPGA becomes its own master and resets its clock.
+    right->setRegister(6, 2, 1);
+    WordStream reset;
+    reset.word(timestampResetWord());
+    right->pushData(reset.bytes);
+    cap.set(EVENT_CAP_PROP_BATCH_EVENTS, 1);
+    std::vector<Event> packet;
+    int reads = 0;
+    while (reads < 200 && cap.read(packet))  // live: each read returns within a poll period
+        reads++;
+    EXPECT_LT(reads, 200) << "the pair goes on with one camera whose clock runs apart";
+    EXPECT_NE(std::string::npos, cap.getLastError().find("davis:00000491 (DAVIS346B, usb 001:011): the stereo sync cable "
+                                                        "was unplugged (this camera, the slave at the start, now reports master)"))
+        << cap.getLastError();
 }
 
 TEST(Event_Capture_Davis, stereo_without_sync_cable_is_refused)

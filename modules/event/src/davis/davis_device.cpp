@@ -74,10 +74,13 @@ DavisDevice::DavisDevice(const Ptr<UsbTransport>& transport, const UsbDeviceId& 
     identity_.usb = id;
     const bool fx2 = id.productId == kProductFx2;
     const int required = fx2 ? kRequiredFirmwareFx2 : kRequiredFirmwareFx3;
-    if (id.firmwareVersion < required)
-        CV_Error_(Error::StsError, ("%s: USB firmware version %d is too old (this %s camera needs %d): update it "
-                                    "with iniVation's DV software", identity_.name().c_str(), id.firmwareVersion,
-                                    fx2 ? "FX2" : "FX3", required));
+    if (id.firmwareVersion != required)
+        CV_Error_(Error::StsError, ("%s: USB firmware version %d is %s (this back-end speaks the protocol of "
+                                    "version %d of %s cameras): %s", identity_.name().c_str(), id.firmwareVersion,
+                                    id.firmwareVersion < required ? "too old" : "newer than supported", required,
+                                    fx2 ? "FX2" : "FX3",
+                                    id.firmwareVersion < required ? "update it with iniVation's DV software"
+                                                                  : "use iniVation's DV software or libcaer"));
     usb_ = transport->open(id);
     identify();
 }
@@ -105,12 +108,20 @@ void DavisDevice::identify()
 {
     DavisIdentity& d = identity_;
     d.logicVersion = (int)readConfig(SYSINFO, SYSINFO_LOGIC_VERSION);
-    if (d.logicVersion < kRequiredLogicVersion)
-        CV_Error_(Error::StsError, ("%s: FPGA logic version %d is too old (needs %d): update it with iniVation's "
-                                    "DV software", d.name().c_str(), d.logicVersion, kRequiredLogicVersion));
-    // Newer logic is accepted: the registers used here have kept their addresses so far.
     d.logicPatch = (int)readConfig(SYSINFO, SYSINFO_LOGIC_PATCH);
+    if (d.logicVersion != kRequiredLogicVersion || d.logicPatch < kRequiredLogicPatch)
+        CV_Error_(Error::StsError, ("%s: FPGA logic version %d patch %d is %s (this back-end speaks the protocol "
+                                    "of logic %d, patch %d or later): %s", d.name().c_str(), d.logicVersion,
+                                    d.logicPatch, d.logicVersion > kRequiredLogicVersion ? "newer than supported"
+                                                                                         : "too old",
+                                    kRequiredLogicVersion, kRequiredLogicPatch,
+                                    d.logicVersion > kRequiredLogicVersion ? "use iniVation's DV software or libcaer"
+                                                                           : "update it with iniVation's DV software"));
     d.chipId = (int)readConfig(SYSINFO, SYSINFO_CHIP_IDENTIFIER);
+    if (!isSupportedChip(d.chipId))
+        CV_Error_(Error::StsError, ("%s: chip %s (id %d) is not supported: this back-end has the bias tables of "
+                                    "DAVIS240A/B/C, DAVIS128 and DAVIS346A/B/C only", d.name().c_str(),
+                                    chipName(d.chipId), d.chipId));
     d.master = readConfig(SYSINFO, SYSINFO_DEVICE_IS_MASTER) != 0;
     d.logicClockMHz = (int)readConfig(SYSINFO, SYSINFO_LOGIC_CLOCK);
     d.usbClockMHz = (int)readConfig(SYSINFO, SYSINFO_USB_CLOCK);
@@ -150,10 +161,23 @@ void DavisDevice::sendDefaultConfig()
     writeConfig(MUX, MUX_DROP_DVS_ON_STALL, 1);
     writeConfig(DVS, DVS_WAIT_ON_STALL, 0);
     writeConfig(DVS, DVS_EXTERNAL_AER_CONTROL, 0);
+    // Every filter register is written, whatever a previous program left: a camera last used with "suppress
+    // OFF events" would otherwise stream one polarity.
     if (readConfig(DVS, DVS_HAS_PIXEL_FILTER) != 0)
-        for (int p = DVS_PIXEL_FILTER_FIRST; p <= DVS_PIXEL_FILTER_LAST; p++)  // (row, col) pairs out of range = unused
-            writeConfig(DVS, (uint8_t)p, (uint32_t)((p - DVS_PIXEL_FILTER_FIRST) % 2 == 0 ? identity_.rawColumns
-                                                                                      : identity_.rawRows));
+        for (int p = DVS_PIXEL_FILTER_FIRST; p <= DVS_PIXEL_FILTER_LAST; p++)  // (row, column) pairs out of range = unused
+            writeConfig(DVS, (uint8_t)p, (uint32_t)((p - DVS_PIXEL_FILTER_FIRST) % 2 == 0 ? identity_.rawRows
+                                                                                      : identity_.rawColumns));
+    if (readConfig(DVS, DVS_HAS_SKIP_FILTER) != 0)
+    {
+        writeConfig(DVS, DVS_SKIP_ENABLE, 0);
+        writeConfig(DVS, DVS_SKIP_EVERY, kSkipEveryDefault);
+    }
+    if (readConfig(DVS, DVS_HAS_POLARITY_FILTER) != 0)
+    {
+        writeConfig(DVS, DVS_POLARITY_FLATTEN, 0);
+        writeConfig(DVS, DVS_POLARITY_SUPPRESS, 0);
+        writeConfig(DVS, DVS_POLARITY_SUPPRESS_TYPE, 0);
+    }
     if (identity_.hasBackgroundActivityFilter)
     {
         writeConfig(DVS, DVS_BA_ENABLE, backgroundActivity_ ? 1 : 0);

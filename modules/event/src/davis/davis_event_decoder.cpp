@@ -21,9 +21,22 @@ const int64 kWrapUs = 0x8000;
 }  // namespace
 
 DavisEventDecoder::DavisEventDecoder(int rawColumns, int rawRows, bool invertXY, bool waitForTimestampReset)
-    : rawColumns_(rawColumns), rawRows_(rawRows), invertXY_(invertXY), synchronised_(!waitForTimestampReset)
+    : rawColumns_(rawColumns), rawRows_(rawRows), invertXY_(invertXY), synchronised_(!waitForTimestampReset),
+      armed_(waitForTimestampReset)
 {
     CV_Assert(rawColumns > 0 && rawRows > 0);
+}
+
+void DavisEventDecoder::arm(int64 epochUs)
+{
+    armed_ = true;
+    armedEpoch_ = epochUs;
+}
+
+void DavisEventDecoder::disarm()
+{
+    armed_ = false;
+    synchronised_ = false;
 }
 
 void DavisEventDecoder::decode(const uint8_t* data, size_t size, std::vector<Event>& out, int camera)
@@ -47,11 +60,16 @@ void DavisEventDecoder::decode(const uint8_t* data, size_t size, std::vector<Eve
             if (value == kSpecialTimestampReset)
             {
                 counters_.timestampResets++;
-                if (synchronised_)
-                    epochOffset_ = current_;  // a reset nobody here asked for: time goes on, monotonic
+                if (armed_)
+                {
+                    epochOffset_ = armedEpoch_;  // the reset we asked for
+                    armed_ = false;
+                    synchronised_ = true;
+                }
+                else if (synchronised_)  // a reset nobody here asked for: time goes on, never back
+                    epochOffset_ = unarmedEpoch_ ? std::max(current_, unarmedEpoch_(current_)) : current_;
                 else
-                    epochOffset_ = 0;         // the reset we waited for: device time 0 starts now
-                synchronised_ = true;
+                    counters_.staleResets++;
                 wrapBase_ = 0;
                 current_ = epochOffset_;
                 lastRow_ = -1;

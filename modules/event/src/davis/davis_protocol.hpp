@@ -19,9 +19,12 @@ namespace davis {
 const uint16_t kVendorId = 0x152A;
 const uint16_t kProductFx2 = 0x841B;  // older DAVIS240 boards
 const uint16_t kProductFx3 = 0x841A;  // DAVIS240C / DAVIS346 "FX3"
+// The versions this protocol is for, as strict as libcaer 3.3: these exactly (another number may have moved a
+// register), and logic patch 1 or later.
 const int kRequiredFirmwareFx2 = 4;   // low byte of bcdDevice
 const int kRequiredFirmwareFx3 = 6;
 const int kRequiredLogicVersion = 18;
+const int kRequiredLogicPatch = 1;
 const uint8_t kDataEndpoint = 0x82;   // bulk IN: the 16-bit event word stream
 
 // Configuration channel: vendor control requests.
@@ -81,11 +84,14 @@ inline const char* chipName(int chip)
 }
 
 inline bool isDavis240(int chip) { return chip == DAVIS240A || chip == DAVIS240B || chip == DAVIS240C; }
-/** DAVIS346 and DAVIS640 chips: they have the AdcTestVoltage bias (index 4) and the TestADC chip field. */
-inline bool hasTestAdc(int chip)
+/** The chips whose biases and chip fields the tables below are right for. DAVIS208 and DAVIS640 take further
+biases and overrides, and DAVIS640H has other bias addresses: they are refused rather than misconfigured. */
+inline bool isSupportedChip(int chip)
 {
-    return chip == DAVIS346A || chip == DAVIS346B || chip == DAVIS346C || chip == DAVIS640 || chip == DAVIS640H;
+    return isDavis240(chip) || chip == DAVIS128 || chip == DAVIS346A || chip == DAVIS346B || chip == DAVIS346C;
 }
+/** DAVIS346 chips (of those supported): they have the AdcTestVoltage bias (index 4) and the TestADC chip field. */
+inline bool hasTestAdc(int chip) { return chip == DAVIS346A || chip == DAVIS346B || chip == DAVIS346C; }
 
 /** One value of the chip configuration: module 5 parameter (bias index < 128, shift-register field >= 128). */
 struct ChipSetting
@@ -102,7 +108,7 @@ const ChipSetting kDavis240Biases[] = {
     { 20, 0x8410 }, { 21, 0x8410 },
 };
 
-// DAVIS346 (also DAVIS128 / 208 / 640): the 37-branch bias generator. Index 4 exists on 346 / 640 only.
+// DAVIS346 (also DAVIS128): the 37-branch bias generator. Index 4 exists on the 346 only.
 const ChipSetting kDavis346Biases[] = {
     { 0, 0x019B }, { 1, 0x0195 }, { 2, 0x01E0 }, { 3, 0x01C1 }, { 4, 0x01D5 }, { 8, 0x5A4F }, { 9, 0x7D7E },
     { 10, 0x427F }, { 11, 0x5FFF }, { 12, 0x401F }, { 13, 0x690F }, { 14, 0x23AD }, { 15, 0x110D },
@@ -118,8 +124,9 @@ const ChipSetting kCommonChipFields[] = {
     { 136, 1 }, { 137, 0 }, { 138, 1 }, { 140, 0 }, { 141, 0 },
 };
 const uint8_t kFieldSpecialPixelControl = 139;  // DAVIS240A/B only: 0
-const uint8_t kFieldSelectGrayCounter = 143;    // DAVIS128/208/346/640/640H: 1
-const uint8_t kFieldTestAdc = 144;              // DAVIS346/640/640H: 0
+const uint8_t kFieldSelectGrayCounter = 143;    // DAVIS128/346: 1
+const uint8_t kFieldTestAdc = 144;              // DAVIS346: 0
+const uint32_t kSkipEveryDefault = 5;           // DVS skip filter's N when it is off (libcaer's default)
 
 }  // namespace davis
 }  // namespace detail

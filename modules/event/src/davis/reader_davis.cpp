@@ -5,12 +5,15 @@
 // Live DAVIS back-end of EventCapture: a reader thread turns the camera's bulk transfers into decoded event
 // chunks in a bounded queue; next() hands them out. Nothing is dropped silently: a full queue, a failed
 // transfer and an invalid address each have a counter, and an unplugged camera ends the stream with a
-// message. Stereo: two cameras on a sync cable, the master's clock reset once both run.
+// message. Stereo: two cameras on a sync cable, the master's clock reset once both run and both decoders are
+// armed for that reset (not for one the slave's FPGA latched before); later resets nobody asked for give both
+// the same new epoch (DavisPairClock), and one that finds the sync cable gone ends the stream saying so.
 
 #include "precomp.hpp"
 #include "io/event_reader.hpp"
 #include "davis/davis_device.hpp"
 #include "davis/davis_event_decoder.hpp"
+#include "davis/davis_pair_clock.hpp"
 #include "davis/davis_protocol.hpp"
 
 #include <atomic>
@@ -33,10 +36,19 @@ const int kPollMs = 100;  // how often the reader thread and a waiting next() lo
 class DavisReader CV_FINAL : public EventReader
 {
 public:
-    DavisReader(const Ptr<DavisDevice>& device, const ReaderOptions& options, bool resetsClock)
+    /** @param pair the clock two cameras of a stereo pair share, with @p pairIndex this camera's (0 or 1);
+    empty for a single camera. */
+    DavisReader(const Ptr<DavisDevice>& device, const ReaderOptions& options, bool resetsClock,
+                const Ptr<DavisPairClock>& pair = Ptr<DavisPairClock>(), int pairIndex = 0)
         : device_(device), capacity_((size_t)std::max(1, options.liveQueueCapacity)), resetsClock_(resetsClock),
+          pair_(pair), pairIndex_(pairIndex),
           decoder_(device->identity().rawColumns, device->identity().rawRows, device->identity().invertXY, true)
     {
+        decoder_.disarm();  // a reset the FPGA latched before the start must not set the time: armClock() does
+        if (pair_)
+            decoder_.setUnarmedResetEpoch([this](int64 lastTime) {
+                return pair_->agree(pairIndex_, unarmedResets_++, lastTime);
+            });
     }
 
     ~DavisReader() CV_OVERRIDE { shutdown(); }
@@ -49,7 +61,22 @@ public:
         thread_ = std::thread(&DavisReader::run, this);
     }
 
-    void resetClock() { device_->resetTimestamp(); }
+    /** The next timestamp reset sets this camera's time to @p epochUs. Returns once the reader thread has
+    taken it (bounded), so that a pulse sent afterwards is the one it waits for. */
+    void armClock(int64 epochUs)
+    {
+        std::unique_lock<std::mutex> lock(mutex_);
+        armEpoch_ = epochUs;
+        armPending_ = true;
+        armTaken_.wait_for(lock, std::chrono::seconds(2), [&] { return !armPending_ || ended_; });
+    }
+
+    /** Arms this camera for time 0 and pulses its reset (and, through the cable, its slave's). */
+    void resetClock()
+    {
+        armClock(0);
+        device_->resetTimestamp();
+    }
 
     String name() const CV_OVERRIDE { return "DAVIS"; }
     Size sensorSize() const CV_OVERRIDE { return device_->identity().sensorSize(); }
@@ -129,8 +156,18 @@ private:
     {
         std::vector<uint8_t> transfer;
         std::vector<Event> events;
+        int64 resetsSeen = 0;
         while (!stop_)
         {
+            {
+                std::lock_guard<std::mutex> lock(mutex_);
+                if (armPending_)
+                {
+                    decoder_.arm(armEpoch_);
+                    armPending_ = false;
+                    armTaken_.notify_all();
+                }
+            }
             UsbBulkStatus status;
             try
             {
@@ -155,8 +192,22 @@ private:
                                   device_->identity().name().c_str()), String());
                 return;
             }
+            if (status == USB_BULK_STREAM_ENDED)
+            {
+                finish(cv::format("%s: %s; the stream ends here", device_->identity().name().c_str(),
+                                  device_->usb().streamEndReason().c_str()), String());
+                return;
+            }
             events.clear();
             decoder_.decode(transfer.data(), transfer.size(), events);
+            if (pair_)
+            {
+                pair_->publish(pairIndex_, decoder_.currentTime());
+                const int64 resets = decoder_.counters().timestampResets;
+                if (resets != resetsSeen && decoder_.synchronised() && syncCableLost())
+                    return;
+                resetsSeen = resets;
+            }
             {
                 std::lock_guard<std::mutex> lock(mutex_);
                 counters_ = decoder_.counters();
@@ -174,6 +225,28 @@ private:
         }
     }
 
+    /** After a reset: whether this camera's master / slave role changed (libcaer reads it on every reset).
+    A slave turned master has lost its sync cable: its clock runs apart from here, so the stream ends. */
+    bool syncCableLost()
+    {
+        bool master;
+        try
+        {
+            master = device_->readConfig(davis::SYSINFO, davis::SYSINFO_DEVICE_IS_MASTER) != 0;
+        }
+        catch (const cv::Exception&)
+        {
+            return false;  // gone or not answering: the next read says so
+        }
+        if (master == device_->identity().master)
+            return false;
+        finish(cv::format("%s: the stereo sync cable was unplugged (this camera, %s at the start, now reports "
+                          "%s): the two clocks run apart from here, so the stream ends; reconnect it and reopen",
+                          device_->identity().name().c_str(), master ? "the slave" : "the master",
+                          master ? "master" : "slave"), String());
+        return true;
+    }
+
     void finish(const String& endMessage, const String& fatal)
     {
         {
@@ -183,18 +256,24 @@ private:
             ended_ = true;
         }
         ready_.notify_all();
+        armTaken_.notify_all();
     }
 
     Ptr<DavisDevice> device_;
     const size_t capacity_;
     const bool resetsClock_;
+    Ptr<DavisPairClock> pair_;
+    const int pairIndex_;
     DavisEventDecoder decoder_;  // reader thread only
+    int unarmedResets_ = 0;      // reader thread only
     std::thread thread_;
     bool started_ = false;
     std::atomic<bool> stop_{ false };
 
     mutable std::mutex mutex_;  // guards everything below
-    std::condition_variable ready_;
+    std::condition_variable ready_, armTaken_;
+    bool armPending_ = false;
+    int64 armEpoch_ = 0;
     struct Chunk
     {
         std::vector<Event> events;
@@ -252,12 +331,15 @@ Ptr<EventReader> openDavisStereo(const String& leftSource, const String& leftSel
         CV_Error_(Error::StsError, ("stereo %s + %s: both cameras report slave: each waits for a clock the other "
                                     "does not send (check the sync cable's direction)",
                                     left->identity().name().c_str(), right->identity().name().c_str()));
-    Ptr<DavisReader> l = makePtr<DavisReader>(left, options, leftMaster);
-    Ptr<DavisReader> r = makePtr<DavisReader>(right, options, rightMaster);
-    // The slave runs first, so that it counts from the master's reset pulse like the master does.
+    Ptr<DavisPairClock> pair = makePtr<DavisPairClock>();
+    Ptr<DavisReader> l = makePtr<DavisReader>(left, options, leftMaster, pair, 0);
+    Ptr<DavisReader> r = makePtr<DavisReader>(right, options, rightMaster, pair, 1);
+    // The slave runs first, so that it counts from the master's reset pulse like the master does; its FPGA may
+    // send a reset it latched while stopped as its first word: only the pulse after arming counts.
     Ptr<DavisReader> master = leftMaster ? l : r, slave = leftMaster ? r : l;
     slave->start();
     master->start();
+    slave->armClock(0);
     master->resetClock();
     return openStereoMerge(l, r, rightTimeOffset);
 }

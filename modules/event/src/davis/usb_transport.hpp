@@ -31,7 +31,8 @@ enum UsbBulkStatus
     USB_BULK_DATA = 0,        //!< a completed transfer; its bytes are in the buffer
     USB_BULK_TIMEOUT = 1,     //!< nothing completed within the timeout (not an error)
     USB_BULK_TRANSFER_ERROR = 2,  //!< one transfer failed (stall, overflow, CRC): its data is lost, the stream goes on
-    USB_BULK_DEVICE_GONE = 3  //!< the device was unplugged: nothing more will come
+    USB_BULK_DEVICE_GONE = 3, //!< the device was unplugged: nothing more will come
+    USB_BULK_STREAM_ENDED = 4 //!< no transfer can be kept in flight any more; streamEndReason() says why
 };
 
 /** An open device (interface 0 claimed). Control requests raise cv::Exception naming the device on failure. */
@@ -47,9 +48,12 @@ public:
     /** Starts @p transfers asynchronous bulk IN transfers of @p bytes each on @p endpoint, resubmitted as
     they complete, until stopBulkIn(). */
     virtual void startBulkIn(uint8_t endpoint, int transfers, int bytes) = 0;
-    /** Waits up to @p timeoutMs for the next completed transfer. Only one thread calls it. */
+    /** Waits up to @p timeoutMs for the next completed transfer. Only one thread calls it; control requests
+    may come from others meanwhile. */
     virtual UsbBulkStatus readBulk(std::vector<uint8_t>& data, int timeoutMs) = 0;
-    /** Cancels the transfers and waits (bounded) until they have all returned. Never raises. */
+    /** Why readBulk() said USB_BULK_STREAM_ENDED (empty before). */
+    virtual String streamEndReason() const = 0;
+    /** Cancels the transfers until none is in flight (bounded in time). Never raises. */
     virtual void stopBulkIn() = 0;
 };
 

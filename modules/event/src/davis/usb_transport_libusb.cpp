@@ -2,12 +2,12 @@
 // It is subject to the license terms in the LICENSE file found in the top-level directory
 // of this distribution and at http://opencv.org/license.html.
 
-// UsbTransport over libusb-1.0. Each open device has its own libusb context, so that the reader thread of
-// each camera of a stereo pair pumps only its own transfers. Without libusb (OPENCV_EVENT_HAVE_LIBUSB unset)
-// the transport finds no device and open() says why.
+// UsbTransport over libusb-1.0: enumeration, and the libusb calls of an open device (LibusbLink) under the
+// shared transfer bookkeeping (usb_link_device.cpp). Without libusb (OPENCV_EVENT_HAVE_LIBUSB unset) the
+// transport finds no device and open() says why.
 
 #include "precomp.hpp"
-#include "davis/usb_transport.hpp"
+#include "davis/usb_link.hpp"
 
 #include <deque>
 #include <mutex>
@@ -25,6 +25,12 @@ namespace detail {
 namespace {
 
 const unsigned kControlTimeoutMs = 1000;
+static_assert((int)USB_LINK_ERROR_NOT_FOUND == (int)LIBUSB_ERROR_NOT_FOUND &&
+                  (int)USB_LINK_ERROR_NO_DEVICE == (int)LIBUSB_ERROR_NO_DEVICE &&
+                  (int)USB_LINK_ERROR_TIMEOUT == (int)LIBUSB_ERROR_TIMEOUT && (int)USB_LINK_ERROR_PIPE == (int)LIBUSB_ERROR_PIPE &&
+                  (int)USB_LINK_ERROR_INTERRUPTED == (int)LIBUSB_ERROR_INTERRUPTED &&
+                  (int)USB_LINK_ERROR_BUSY == (int)LIBUSB_ERROR_BUSY && (int)USB_LINK_ERROR_IO == (int)LIBUSB_ERROR_IO,
+              "UsbLink's error codes are libusb's");
 // What a user without access to the camera's device node needs (iniVation's vendor id; every product).
 const char* const kUdevRuleHint =
     "a udev rule such as SUBSYSTEM==\"usb\", ATTR{idVendor}==\"152a\", MODE=\"0666\" in /etc/udev/rules.d/, then re-plug";
@@ -34,10 +40,12 @@ String usbError(int code)
     return cv::format("%s (%s)", libusb_error_name(code), libusb_strerror((libusb_error)code));
 }
 
-class LibusbDevice CV_FINAL : public UsbDeviceHandle
+/** The libusb calls of one open device; each has its own context, so that the reading thread of each camera
+of a stereo pair handles only its own transfers. The bookkeeping above it is createUsbLinkDevice(). */
+class LibusbLink CV_FINAL : public UsbLink
 {
 public:
-    LibusbDevice(const UsbDeviceId& id) : id_(id)
+    LibusbLink(const UsbDeviceId& id) : id_(id)
     {
         int rc = libusb_init(&ctx_);
         if (rc != LIBUSB_SUCCESS)
@@ -53,148 +61,77 @@ public:
         }
     }
 
-    ~LibusbDevice() CV_OVERRIDE
+    ~LibusbLink() CV_OVERRIDE
     {
-        stopBulkIn();
+        freeBulkIn();
         closeDevice();
     }
 
-    void controlOut(uint8_t requestType, uint8_t request, uint16_t value, uint16_t index,
-                    const uint8_t* data, size_t size) CV_OVERRIDE
+    String location() const CV_OVERRIDE { return id_.location(); }
+    String errorText(int code) const CV_OVERRIDE { return usbError(code); }
+
+    int control(uint8_t requestType, uint8_t request, uint16_t value, uint16_t index, uint8_t* data,
+                uint16_t size) CV_OVERRIDE
     {
-        const int rc = libusb_control_transfer(handle_, requestType, request, value, index,
-                                               const_cast<unsigned char*>(data), (uint16_t)size, kControlTimeoutMs);
-        if (rc != (int)size)
-            CV_Error_(Error::StsError, ("%s: control request 0x%02X (value %u, index %u) failed: %s",
-                                        id_.location().c_str(), request, value, index,
-                                        rc < 0 ? usbError(rc).c_str() : "short transfer"));
+        return libusb_control_transfer(handle_, requestType, request, value, index, data, size, kControlTimeoutMs);
     }
 
-    void controlIn(uint8_t requestType, uint8_t request, uint16_t value, uint16_t index,
-                   uint8_t* data, size_t size) CV_OVERRIDE
-    {
-        const int rc = libusb_control_transfer(handle_, requestType, request, value, index, data, (uint16_t)size,
-                                               kControlTimeoutMs);
-        if (rc != (int)size)
-            CV_Error_(Error::StsError, ("%s: control read 0x%02X (value %u, index %u) failed: %s",
-                                        id_.location().c_str(), request, value, index,
-                                        rc < 0 ? usbError(rc).c_str() : "short transfer"));
-    }
+    int clearHalt(uint8_t endpoint) CV_OVERRIDE { return libusb_clear_halt(handle_, endpoint); }
 
-    void clearHalt(uint8_t endpoint) CV_OVERRIDE
-    {
-        const int rc = libusb_clear_halt(handle_, endpoint);
-        if (rc != LIBUSB_SUCCESS)
-            CV_Error_(Error::StsError, ("%s: clearing the halt of endpoint 0x%02X failed: %s",
-                                        id_.location().c_str(), endpoint, usbError(rc).c_str()));
-    }
-
-    void startBulkIn(uint8_t endpoint, int transfers, int bytes) CV_OVERRIDE
+    int allocateBulkIn(uint8_t endpoint, int transfers, int bytes, UsbLinkListener* listener) CV_OVERRIDE
     {
         CV_Assert(transfers_.empty());
+        listener_ = listener;
         for (int i = 0; i < transfers; i++)
         {
             libusb_transfer* t = libusb_alloc_transfer(0);
             if (!t)
-                CV_Error_(Error::StsNoMem, ("%s: cannot allocate a USB transfer", id_.location().c_str()));
+            {
+                freeBulkIn();
+                return LIBUSB_ERROR_NO_MEM;
+            }
             buffers_.emplace_back((size_t)bytes);
-            libusb_fill_bulk_transfer(t, handle_, endpoint, buffers_.back().data(), bytes, &LibusbDevice::completed,
+            libusb_fill_bulk_transfer(t, handle_, endpoint, buffers_.back().data(), bytes, &LibusbLink::completed,
                                       this, 0);
             transfers_.push_back(t);
-            const int rc = libusb_submit_transfer(t);
-            if (rc != LIBUSB_SUCCESS)
-            {
-                stopBulkIn();
-                CV_Error_(Error::StsError, ("%s: submitting bulk transfers on endpoint 0x%02X failed: %s",
-                                            id_.location().c_str(), endpoint, usbError(rc).c_str()));
-            }
-            active_++;
         }
+        return LIBUSB_SUCCESS;
     }
 
-    UsbBulkStatus readBulk(std::vector<uint8_t>& data, int timeoutMs) CV_OVERRIDE
+    int submit(int transfer) CV_OVERRIDE { return libusb_submit_transfer(transfers_[(size_t)transfer]); }
+    int cancel(int transfer) CV_OVERRIDE { return libusb_cancel_transfer(transfers_[(size_t)transfer]); }
+
+    int handleEvents(int timeoutMs) CV_OVERRIDE
     {
-        const int64 deadline = getTickCount() + (int64)(timeoutMs * getTickFrequency() / 1000.0);
-        while (completed_.empty() && !gone_)
-        {
-            const int64 left = deadline - getTickCount();
-            if (left <= 0)
-                return USB_BULK_TIMEOUT;
-            const double leftUs = (double)left * 1e6 / getTickFrequency();
-            timeval tv;
-            tv.tv_sec = (long)(leftUs / 1e6);
-            tv.tv_usec = (long)(leftUs - (double)tv.tv_sec * 1e6);
-            const int rc = libusb_handle_events_timeout_completed(ctx_, &tv, nullptr);
-            if (rc == LIBUSB_ERROR_NO_DEVICE)
-                gone_ = true;
-            else if (rc != LIBUSB_SUCCESS && rc != LIBUSB_ERROR_INTERRUPTED && rc != LIBUSB_ERROR_TIMEOUT)
-                return USB_BULK_TRANSFER_ERROR;
-        }
-        if (completed_.empty())
-            return USB_BULK_DEVICE_GONE;
-        Completed c = std::move(completed_.front());
-        completed_.pop_front();
-        if (!c.ok)
-            return USB_BULK_TRANSFER_ERROR;
-        data.swap(c.data);
-        return USB_BULK_DATA;
+        timeval tv;
+        tv.tv_sec = timeoutMs / 1000;
+        tv.tv_usec = (timeoutMs % 1000) * 1000;
+        return libusb_handle_events_timeout_completed(ctx_, &tv, nullptr);
     }
 
-    void stopBulkIn() CV_OVERRIDE
+    void freeBulkIn() CV_OVERRIDE
     {
         for (libusb_transfer* t : transfers_)
-            libusb_cancel_transfer(t);  // NOT_FOUND for those already returned: fine
-        // Every transfer must have returned before its memory goes; bounded at 1 s so that a wedged host
-        // controller cannot hang release().
-        for (int i = 0; i < 100 && active_ > 0; i++)
-        {
-            timeval tv = { 0, 10000 };
-            libusb_handle_events_timeout_completed(ctx_, &tv, nullptr);
-        }
-        if (active_ == 0)
-        {
-            for (libusb_transfer* t : transfers_)
-                libusb_free_transfer(t);
-            transfers_.clear();
-            buffers_.clear();
-        }
-        // else: leak the few transfers still in flight rather than free memory the kernel may still write
-        completed_.clear();
+            libusb_free_transfer(t);
+        transfers_.clear();
+        buffers_.clear();
     }
 
 private:
-    struct Completed
-    {
-        bool ok;
-        std::vector<uint8_t> data;
-    };
-
     static void LIBUSB_CALL completed(libusb_transfer* t)
     {
-        LibusbDevice* self = static_cast<LibusbDevice*>(t->user_data);
+        LibusbLink* self = static_cast<LibusbLink*>(t->user_data);
+        const int index = (int)(std::find(self->transfers_.begin(), self->transfers_.end(), t) - self->transfers_.begin());
+        UsbTransferStatus status = USB_TRANSFER_FAILED;  // error, timeout, overflow
         switch (t->status)
         {
-        case LIBUSB_TRANSFER_COMPLETED:
-            self->completed_.push_back({ true, std::vector<uint8_t>(t->buffer, t->buffer + t->actual_length) });
-            break;
-        case LIBUSB_TRANSFER_CANCELLED:
-            self->active_--;
-            return;
-        case LIBUSB_TRANSFER_NO_DEVICE:
-            self->gone_ = true;
-            self->active_--;
-            return;
-        default:  // error, stall, overflow, timeout: this transfer's data is lost; the stream goes on
-            self->completed_.push_back({ false, std::vector<uint8_t>() });
-            break;
+        case LIBUSB_TRANSFER_COMPLETED: status = USB_TRANSFER_COMPLETED; break;
+        case LIBUSB_TRANSFER_CANCELLED: status = USB_TRANSFER_CANCELLED; break;
+        case LIBUSB_TRANSFER_NO_DEVICE: status = USB_TRANSFER_NO_DEVICE; break;
+        case LIBUSB_TRANSFER_STALL: status = USB_TRANSFER_STALL; break;
+        default: break;
         }
-        const int rc = libusb_submit_transfer(t);
-        if (rc != LIBUSB_SUCCESS)
-        {
-            self->active_--;
-            if (rc == LIBUSB_ERROR_NO_DEVICE)
-                self->gone_ = true;
-        }
+        self->listener_->transferDone(index, status, t->buffer, t->actual_length);
     }
 
     void openDevice()
@@ -249,11 +186,9 @@ private:
     libusb_context* ctx_ = nullptr;
     libusb_device_handle* handle_ = nullptr;
     bool claimed_ = false;
+    UsbLinkListener* listener_ = nullptr;
     std::vector<libusb_transfer*> transfers_;
-    std::deque<std::vector<uint8_t> > buffers_;  // deque: growing it never moves a buffer already submitted
-    std::deque<Completed> completed_;            // touched only on the thread that pumps events
-    int active_ = 0;
-    bool gone_ = false;
+    std::deque<std::vector<uint8_t> > buffers_;  // deque: growing it never moves a buffer already allocated
 };
 
 class LibusbTransport CV_FINAL : public UsbTransport
@@ -300,7 +235,7 @@ public:
 
     Ptr<UsbDeviceHandle> open(const UsbDeviceId& device) CV_OVERRIDE
     {
-        return makePtr<LibusbDevice>(device);
+        return createUsbLinkDevice(makePtr<LibusbLink>(device));
     }
 };
 

@@ -79,8 +79,11 @@ public:
     {
         Side& l = side_[0];
         Side& r = side_[1];
+        // Two live cameras are one instrument: when one stops (unplugged, its sync cable gone), the pair's
+        // stream ends with its message instead of going on as a single camera. Files go on to the longer one.
+        const bool live = isLive();
         size_t produced = 0;
-        while (produced < kReaderChunk)
+        while (produced < kReaderChunk && !(live && (l.done || r.done)))
         {
             const bool lr = l.ready(), rr = r.ready();
             bool takeLeft;
@@ -120,7 +123,7 @@ public:
             out.push_back(e);
             produced++;
         }
-        return produced > 0 || !(l.done && r.done);
+        return produced > 0 || !(live ? l.done || r.done : l.done && r.done);
     }
 
 private:
