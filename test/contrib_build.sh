@@ -80,6 +80,8 @@ echo "== contrib_build: opencv_test_event"
 if [[ " ${python[*]} " == *" -DBUILD_opencv_python3=ON "* ]]; then
   echo "== contrib_build: Python bindings (cv2.event)"
   PYTHONPATH="$(dirname "$(find "$build/lib" -name 'cv2*.so' -print -quit)")" /usr/bin/python3 "$here/python_bindings.py"
+else
+  echo "== contrib_build: SKIP the Python bindings: /usr/bin/python3 with numpy and Python.h not found (scripts/setup.sh installs them)"
 fi
 echo "== contrib_build: opencv_perf_event (one sample each: proves the perf tests run, not a timing)"
 # sed reads the whole list: head would exit after 20 lines, and the lister's SIGPIPE fail the pipeline.

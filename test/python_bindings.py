@@ -89,6 +89,7 @@ found = disparity.ravel() >= 0
 # Kept estimates reach the rejection threshold; rejected ones (STEREO_AMBIGUOUS) stay below it.
 assert np.all(confidence.ravel()[found] >= matcher.getMinConfidence())
 rejected = (flags.ravel() & ev.STEREO_AMBIGUOUS) != 0
+assert rejected.sum() > 0, "no estimate rejected: the threshold's side of the check is untested"
 assert np.all(confidence.ravel()[rejected] < matcher.getMinConfidence())
 assert found.sum() > len(events) // 2, found.sum()
 # Judged away from the borders and the start, as the C++ edge test: in the bottom-right corner the clipped

@@ -94,6 +94,7 @@ struct FakeCamera
     std::deque<std::pair<UsbBulkStatus, std::vector<uint8_t> > > bulk;
     bool gone = false;
     int resets = 0;
+    int readsWhenDrained = 0;  // bulk reads that found nothing left after a reset: every transfer was handled
     bool paced = false;  // the first paced transfer went out at paceStart
     std::chrono::steady_clock::time_point paceStart;
     double pacedBytes = 0;
@@ -296,6 +297,8 @@ public:
                 c_->gone = true;
                 return USB_BULK_DEVICE_GONE;
             }
+            if (c_->resets > 0)
+                c_->readsWhenDrained++;
         }
         std::this_thread::sleep_for(std::chrono::milliseconds(std::min(timeoutMs, 2)));
         return USB_BULK_TIMEOUT;

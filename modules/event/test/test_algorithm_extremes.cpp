@@ -58,8 +58,7 @@ std::vector<Event> shifted(std::vector<Event> ev, int64 by)
 
 void expectFinite(const Mat& m, const std::string& what)
 {
-    if (m.empty())
-        return;
+    ASSERT_FALSE(m.empty()) << what << " is empty: nothing to check";
     Mat f = m.reshape(1);
     ASSERT_EQ(f.depth(), CV_32F) << what;
     EXPECT_TRUE(cv::checkRange(f, true)) << what << " has a NaN or an infinity";

@@ -43,6 +43,26 @@ std::vector<Event> randomEvents(int n, int width, int height, uint64 seed, int64
     return ev;
 }
 
+/** Two DAVIS346 on a sync cable (@p leftMaster: which one is master), each sending @p n random events after the
+master's pulse (seeds @p seed and @p seed + 1). */
+struct SyncedPair
+{
+    FakeUsb usb;
+    Ptr<FakeCamera> left, right;
+    std::vector<Event> l, r;
+
+    SyncedPair(bool leftMaster, int n, uint64 seed)
+    {
+        left = usb.add(5, 346, 260, false, leftMaster);
+        right = usb.add(5, 346, 260, false, !leftMaster);
+        (leftMaster ? left : right)->slave = (leftMaster ? right : left).get();
+        l = randomEvents(n, 346, 260, seed);
+        r = randomEvents(n, 346, 260, seed + 1);
+        left->afterReset = encodeWithClock(l);
+        right->afterReset = encodeWithClock(r);
+    }
+};
+
 /** Reads until @p n events came or the stream ended. */
 std::vector<Event> readEvents(EventCapture& cap, size_t n)
 {
@@ -280,7 +300,17 @@ TEST(Event_Capture_Davis, failed_transfers_and_a_full_queue_are_counted_not_sile
     EventCapture cap;
     cap.set(EVENT_CAP_PROP_QUEUE_CAPACITY, 2);
     ASSERT_TRUE(cap.open("davis:0"));
-    std::this_thread::sleep_for(std::chrono::milliseconds(300));  // the reader thread outruns read()
+    // read() waits until the reader thread has handled every transfer (it came back for more after the last
+    // one): 2 chunks fit in the queue, the others must be counted as dropped.
+    for (int i = 0; i < 30000; i++)
+    {
+        {
+            std::lock_guard<std::mutex> lock(cam->mutex);
+            if (cam->readsWhenDrained > 0)
+                break;
+        }
+        std::this_thread::sleep_for(std::chrono::milliseconds(1));
+    }
     cap.set(EVENT_CAP_PROP_BATCH_EVENTS, 1000);
     std::vector<Event> delivered, packet;
     while (delivered.size() + (size_t)cap.get(EVENT_CAP_PROP_DROPPED_EVENTS) < truth.size() && cap.read(packet))
@@ -302,13 +332,11 @@ TEST(Event_Capture_Davis, failed_transfers_and_a_full_queue_are_counted_not_sile
 
 TEST(Event_Capture_Davis, stereo_pair_shares_the_master_clock)
 {
-    FakeUsb usb;
-    Ptr<FakeCamera> left = usb.add(5, 346, 260, false, false);  // slave
-    Ptr<FakeCamera> right = usb.add(5, 346, 260, false, true);  // master
-    right->slave = left.get();
-    const std::vector<Event> l = randomEvents(4000, 346, 260, 5), r = randomEvents(4000, 346, 260, 6);
-    left->afterReset = encodeWithClock(l);
-    right->afterReset = encodeWithClock(r);
+    SyncedPair pair(false, 4000, 5);  // the right camera is master
+    const std::vector<Event>& l = pair.l;
+    const std::vector<Event>& r = pair.r;
+    Ptr<FakeCamera> left = pair.left, right = pair.right;
+    FakeUsb& usb = pair.usb;
     left->pushData(encodeEvents(randomEvents(100, 346, 260, 7, 50000)));  // before the reset: skipped
 
     EventCapture cap;
@@ -337,15 +365,11 @@ TEST(Event_Capture_Davis, stereo_pair_with_a_reset_latched_by_the_slave_starts_b
     // The slave's FPGA latched a reset at power-up (slave detection) and sends it as its first word when it
     // starts, about 0.3 s before the master's pulse: taken for the pulse, it would set the slave's clock that
     // far ahead of the master's.
-    FakeUsb usb;
-    Ptr<FakeCamera> left = usb.add(5, 346, 260, false, false);  // slave
-    Ptr<FakeCamera> right = usb.add(5, 346, 260, false, true);  // master
-    right->slave = left.get();
-    left->latchedReset = true;
-    left->beforeSync = encodeWithClock(randomEvents(500, 346, 260, 9));
-    const std::vector<Event> l = randomEvents(3000, 346, 260, 10), r = randomEvents(3000, 346, 260, 11);
-    left->afterReset = encodeWithClock(l);
-    right->afterReset = encodeWithClock(r);
+    SyncedPair pair(false, 3000, 10);  // the left camera is the slave
+    const std::vector<Event>& l = pair.l;
+    const std::vector<Event>& r = pair.r;
+    pair.left->latchedReset = true;
+    pair.left->beforeSync = encodeWithClock(randomEvents(500, 346, 260, 9));
 
     EventCapture cap;
     ASSERT_TRUE(cap.openStereo("davis:0", "davis:1"));
@@ -421,21 +445,15 @@ TEST(Event_Capture_Davis, a_reset_mid_stream_gives_both_cameras_the_same_new_epo
 
 TEST(Event_Capture_Davis, a_reset_that_finds_the_sync_cable_gone_ends_the_stereo_stream_saying_so)
 {
-    FakeUsb usb;
-    Ptr<FakeCamera> left = usb.add(5, 346, 260, false, true);    // master
-    Ptr<FakeCamera> right = usb.add(5, 346, 260, false, false);  // slave
-    left->slave = right.get();
-    const std::vector<Event> l = randomEvents(200, 346, 260, 12), r = randomEvents(200, 346, 260, 13);
-    left->afterReset = encodeWithClock(l);
-    right->afterReset = encodeWithClock(r);
+    SyncedPair pair(true, 200, 12);  // the right camera is the slave
     EventCapture cap;
     ASSERT_TRUE(cap.openStereo("davis:0", "davis:1"));
-    EXPECT_EQ(l.size() + r.size(), readEvents(cap, l.size() + r.size()).size());
+    EXPECT_EQ(400u, readEvents(cap, 400).size());
     // The cable is pulled: the slave's FPGA becomes its own master and resets its clock.
-    right->setRegister(6, 2, 1);
+    pair.right->setRegister(6, 2, 1);
     WordStream reset;
     reset.word(timestampResetWord());
-    right->pushData(reset.bytes);
+    pair.right->pushData(reset.bytes);
     cap.set(EVENT_CAP_PROP_BATCH_EVENTS, 1);
     std::vector<Event> packet;
     int reads = 0;

@@ -122,7 +122,9 @@ TEST(Event_Capture_Real, evt2_sample_counts_and_ranges)
     EXPECT_EQ(0.0, cap.get(EVENT_CAP_PROP_REJECTED_OUTSIDE));
 }
 
-// shared/data/README.md: Gen4.1 1280x720; 219,596 CD events, 8.8 ms; max x/y 1279/719.
+// The data README gives the sensor (Gen4.1 1280x720), 219,596 CD events and 8.8 ms. The largest x / y
+// (1279 / 719: the events reach the sensor's last column and row) are a regression pin measured on this file
+// with this reader, not a fact the README states.
 TEST(Event_Capture_Real, evt3_sample_counts_and_ranges)
 {
     EventCapture cap(requireSharedData("format_samples/evt3_sample.raw"));

@@ -19,28 +19,37 @@ using namespace fake_usb_link;
 std::vector<uint8_t> numbered(uint32_t k) { return { (uint8_t)k, (uint8_t)(k >> 8), (uint8_t)(k >> 16), (uint8_t)(k >> 24) }; }
 uint32_t number(const std::vector<uint8_t>& b) { return b[0] | (b[1] << 8) | (b[2] << 16) | ((uint32_t)b[3] << 24); }
 
+struct Reading
+{
+    std::vector<uint32_t> numbers;  //!< the transfers of data, in order
+    UsbBulkStatus last = USB_BULK_TIMEOUT;
+    int errors = 0;                 //!< USB_BULK_TRANSFER_ERROR answers
+};
+
+/** A link device on a fake link, streaming @p transfers transfers of 4 bytes. */
 struct LinkDevice
 {
     Ptr<FakeLink> link = makePtr<FakeLink>();
     Ptr<UsbDeviceHandle> device = createUsbLinkDevice(link);
 
-    /** Reads until @p n transfers of data came, the stream ended, or @p maxReads reads were made. */
-    std::vector<uint32_t> read(size_t n, UsbBulkStatus& last, int& errors, int maxReads = 5000)
+    explicit LinkDevice(int transfers) { device->startBulkIn(0x82, transfers, 4); }
+
+    /** Reads until @p n transfers of data came, the stream ended, or 5000 reads were made. */
+    Reading read(size_t n)
     {
-        std::vector<uint32_t> got;
+        Reading r;
         std::vector<uint8_t> data;
-        errors = 0;
-        for (int r = 0; r < maxReads && got.size() < n; r++)
+        for (int k = 0; k < 5000 && r.numbers.size() < n; k++)
         {
-            last = device->readBulk(data, 20);
-            if (last == USB_BULK_DATA)
-                got.push_back(number(data));
-            else if (last == USB_BULK_TRANSFER_ERROR)
-                errors++;
-            else if (last != USB_BULK_TIMEOUT)
+            r.last = device->readBulk(data, 20);
+            if (r.last == USB_BULK_DATA)
+                r.numbers.push_back(number(data));
+            else if (r.last == USB_BULK_TRANSFER_ERROR)
+                r.errors++;
+            else if (r.last != USB_BULK_TIMEOUT)
                 break;
         }
-        return got;
+        return r;
     }
 };
 
@@ -56,8 +65,7 @@ TEST(Event_UsbLinkDevice, callbacks_on_a_control_request_thread_lose_and_repeat_
 {
     // libusb runs completion callbacks on a thread sending a control request (a reset, a bias) whenever the
     // reading thread is between two waits: both threads then touch the completed-transfer queue.
-    LinkDevice d;
-    d.device->startBulkIn(0x82, 8, 4);
+    LinkDevice d(8);
     const uint32_t n = 3000;
     std::vector<uint32_t> got;
     std::atomic<size_t> received{ 0 };
@@ -90,31 +98,27 @@ TEST(Event_UsbLinkDevice, callbacks_on_a_control_request_thread_lose_and_repeat_
 
 TEST(Event_UsbLinkDevice, a_stall_is_cleared_from_the_reading_thread_and_the_stream_goes_on)
 {
-    LinkDevice d;
-    d.device->startBulkIn(0x82, 8, 4);
+    LinkDevice d(8);
     for (uint32_t k = 0; k < 10; k++)
         d.link->pushData(numbered(k));
     d.link->pushStatus(USB_TRANSFER_STALL);
     for (uint32_t k = 10; k < 20; k++)
         d.link->pushData(numbered(k));
-    UsbBulkStatus last;
-    int errors;
-    EXPECT_EQ(iota(0, 20), d.read(20, last, errors));
-    EXPECT_EQ(1, errors);  // one loss reported for the stall, not one per transfer it failed
+    const Reading r = d.read(20);
+    EXPECT_EQ(iota(0, 20), r.numbers);
+    EXPECT_EQ(1, r.errors);  // one loss reported for the stall, not one per transfer it failed
     EXPECT_EQ(1, d.link->counts().clearHalts);
     EXPECT_EQ(8, d.link->inFlight());
 }
 
 TEST(Event_UsbLinkDevice, an_endpoint_that_stalls_after_every_clear_ends_the_stream_with_the_reason)
 {
-    LinkDevice d;
-    d.device->startBulkIn(0x82, 4, 4);
+    LinkDevice d(4);
     for (int k = 0; k < 10; k++)
         d.link->pushStatus(USB_TRANSFER_STALL);
-    UsbBulkStatus last;
-    int errors;
-    EXPECT_TRUE(d.read(1, last, errors).empty());
-    ASSERT_EQ(USB_BULK_STREAM_ENDED, last);
+    const Reading r = d.read(1);
+    EXPECT_TRUE(r.numbers.empty());
+    ASSERT_EQ(USB_BULK_STREAM_ENDED, r.last);
     EXPECT_NE(std::string::npos, d.device->streamEndReason().find("stalled 4 times in a row")) << d.device->streamEndReason();
     EXPECT_EQ(4, d.link->counts().clearHalts);
     std::vector<uint8_t> data;
@@ -123,33 +127,29 @@ TEST(Event_UsbLinkDevice, an_endpoint_that_stalls_after_every_clear_ends_the_str
 
 TEST(Event_UsbLinkDevice, a_halt_that_cannot_be_cleared_ends_the_stream_with_the_reason)
 {
-    LinkDevice d;
-    d.device->startBulkIn(0x82, 4, 4);
+    LinkDevice d(4);
     d.link->clearHaltResult = USB_LINK_ERROR_PIPE;
     d.link->pushData(numbered(7));
     d.link->pushStatus(USB_TRANSFER_STALL);
-    UsbBulkStatus last;
-    int errors;
-    EXPECT_EQ(std::vector<uint32_t>{ 7 }, d.read(2, last, errors));
-    ASSERT_EQ(USB_BULK_STREAM_ENDED, last);
+    const Reading r = d.read(2);
+    EXPECT_EQ(std::vector<uint32_t>{ 7 }, r.numbers);
+    ASSERT_EQ(USB_BULK_STREAM_ENDED, r.last);
     EXPECT_NE(std::string::npos, d.device->streamEndReason().find("clearing the halt failed: LIBUSB error -9"))
         << d.device->streamEndReason();
 }
 
 TEST(Event_UsbLinkDevice, failed_resubmissions_are_retried_and_no_data_is_lost)
 {
-    LinkDevice d;
-    d.device->startBulkIn(0x82, 2, 4);
+    LinkDevice d(2);
     {
         std::lock_guard<std::mutex> lock(d.link->mutex);
         d.link->failingSubmits = 3;  // the two resubmissions after the first data, and one retry
     }
     for (uint32_t k = 0; k < 40; k++)
         d.link->pushData(numbered(k));
-    UsbBulkStatus last;
-    int errors;
-    EXPECT_EQ(iota(0, 40), d.read(40, last, errors));
-    EXPECT_EQ(0, errors);
+    const Reading r = d.read(40);
+    EXPECT_EQ(iota(0, 40), r.numbers);
+    EXPECT_EQ(0, r.errors);
     std::vector<uint8_t> data;
     EXPECT_EQ(USB_BULK_TIMEOUT, d.device->readBulk(data, 5));  // the last one left idle is retried here
     EXPECT_EQ(2, d.link->inFlight());
@@ -157,18 +157,16 @@ TEST(Event_UsbLinkDevice, failed_resubmissions_are_retried_and_no_data_is_lost)
 
 TEST(Event_UsbLinkDevice, resubmissions_that_keep_failing_end_the_stream_with_the_reason)
 {
-    LinkDevice d;
-    d.device->startBulkIn(0x82, 2, 4);
+    LinkDevice d(2);
     {
         std::lock_guard<std::mutex> lock(d.link->mutex);
         d.link->failingSubmits = -1;
     }
     d.link->pushData(numbered(1));
     d.link->pushData(numbered(2));
-    UsbBulkStatus last;
-    int errors;
-    EXPECT_EQ(std::vector<uint32_t>({ 1, 2 }), d.read(3, last, errors));
-    ASSERT_EQ(USB_BULK_STREAM_ENDED, last);
+    const Reading r = d.read(3);
+    EXPECT_EQ(std::vector<uint32_t>({ 1, 2 }), r.numbers);
+    ASSERT_EQ(USB_BULK_STREAM_ENDED, r.last);
     EXPECT_NE(std::string::npos, d.device->streamEndReason().find("no USB transfer could be kept in flight"))
         << d.device->streamEndReason();
     EXPECT_NE(std::string::npos, d.device->streamEndReason().find("LIBUSB error -1")) << d.device->streamEndReason();
@@ -176,14 +174,12 @@ TEST(Event_UsbLinkDevice, resubmissions_that_keep_failing_end_the_stream_with_th
 
 TEST(Event_UsbLinkDevice, unplugging_ends_the_stream_as_gone)
 {
-    LinkDevice d;
-    d.device->startBulkIn(0x82, 4, 4);
+    LinkDevice d(4);
     d.link->pushData(numbered(5));
     d.link->pushStatus(USB_TRANSFER_NO_DEVICE);
-    UsbBulkStatus last;
-    int errors;
-    EXPECT_EQ(std::vector<uint32_t>{ 5 }, d.read(2, last, errors));
-    EXPECT_EQ(USB_BULK_DEVICE_GONE, last);
+    const Reading r = d.read(2);
+    EXPECT_EQ(std::vector<uint32_t>{ 5 }, r.numbers);
+    EXPECT_EQ(USB_BULK_DEVICE_GONE, r.last);
     const uint8_t value[4] = { 0, 0, 0, 0 };
     EXPECT_THROW(d.device->controlOut(0x40, 0xBF, 1, 3, value, 4), cv::Exception);
     d.device->stopBulkIn();
@@ -194,8 +190,7 @@ TEST(Event_UsbLinkDevice, stopping_cancels_until_no_transfer_is_in_flight)
 {
     // Two transfers complete just before the cancel (their cancel finds nothing); their callbacks run after
     // it. Resubmitting them then would leave transfers in flight that nobody cancels.
-    LinkDevice d;
-    d.device->startBulkIn(0x82, 4, 4);
+    LinkDevice d(4);
     d.link->pushData(numbered(1));
     d.link->pushData(numbered(2));
     d.device->stopBulkIn();
