@@ -715,7 +715,8 @@ int main(int argc, char** argv)
                << "| noise precision / recall | " << noiseText << " |\n"
                << "| events with a lifetime (left / right) | " << acc.withLifetime << " (" << acc.withLifetimeCamera[0]
                << " / " << acc.withLifetimeCamera[1] << ") |\n";
-        md << "| time per event | " << usPerEvent << " us |\n";
+        if (disparities || lifetimes)  // --method=none times nothing
+            md << "| time per event | " << usPerEvent << " us |\n";
         if (filter)
             md << "| filter " << o.filter << ": signal kept / noise removed / signal share of the kept events | "
                << signalKept << " / " << noiseRemoved << " / " << keptPrecision << " % (" << noiseEvents << " noise events) |\n"
@@ -770,7 +771,9 @@ int main(int argc, char** argv)
         if (lifetimes)
             std::cout << "lifetime median relative error " << lifetimeError << (acc.lifetimeRelErrors.empty() ? "" : " %")
                       << ", " << acc.withLifetime << " of " << acc.events << " events with a lifetime, ";
-        std::cout << usPerEvent << " us/event; report in " << o.output << "/report.md\n";
+        if (disparities || lifetimes)
+            std::cout << usPerEvent << " us/event; ";
+        std::cout << "report in " << o.output << "/report.md\n";
         return 0;
     }
     catch (const std::exception& e)

@@ -139,8 +139,10 @@ int main(int argc, char** argv)
         std::vector<Event> packet;
         int64 frames = 0;
         SampleProgress progress;
+        bool touchesZero = false;  // for the advice on events outside the sensor
         while ((o.maxFrames < 0 || frames < o.maxFrames) && cap.read(packet))
         {
+            touchesZero = touchesZero || touchesColumnOrRowZero(packet);
             surface[0]->clearCounts();
             surface[1]->clearCounts();
             if (filter)
@@ -179,6 +181,11 @@ int main(int argc, char** argv)
                   << " ms" << (writePngs ? " in " + o.output : std::string()) << "\n";
         if (filter)
             std::cerr << o.filter << " kept " << filter->getKeptCount() << " of " << filter->getProcessedCount() << " events\n";
+        const long long outside = (long long)cap.get(EVENT_CAP_PROP_REJECTED_OUTSIDE);
+        if (outside > 0)
+            std::cerr << "event_player: warning: "
+                      << outsideEventsWarning(outside, cap.getSensorSize().width, cap.getSensorSize().height,
+                                              cap.getBackendName() == "TEXT", o.oneBased, touchesZero) << "\n";
         return 0;
     }
     catch (const std::exception& e)

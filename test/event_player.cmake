@@ -1,6 +1,7 @@
 # ctest `event_player_frames`: event_player on a small stereo fixture writes left | right frames enlarged to at
 # least 512 px across by default (8 x 6 pixels: 64 times, 1024 x 384 for the pair), or by --zoom; a negative
-# zoom is refused; a file without a sensor size is refused with the option to give.
+# zoom is refused; a file without a sensor size is refused with the option to give; events outside the sensor
+# are reported.
 foreach(v EVENT_PLAYER WORK_DIR)
   if(NOT DEFINED ${v})
     message(FATAL_ERROR "event_player.cmake: ${v} not set")
@@ -63,4 +64,13 @@ execute_process(COMMAND "${EVENT_PLAYER}" "${no_size}" --sensor=4x5 --zoom=1 "--
 png_size("${WORK_DIR}/given_size/frame_00000.png" size)
 if(NOT rc EQUAL 0 OR NOT size STREQUAL "8x5")
   message(FATAL_ERROR "with --sensor=4x5: exit status ${rc}, frame ${size} (expected 8x5, left | right): ${err}")
+endif()
+
+# Events outside the sensor are reported, like event_stereo and event_info do: here one of three (x = 9 on an
+# 8 x 6 sensor).
+set(outside "${WORK_DIR}/outside.txt")
+file(WRITE "${outside}" "8 6\n0.001 1 2 1 0\n0.002 9 4 0 1\n0.003 7 5 1 1\n")
+execute_process(COMMAND "${EVENT_PLAYER}" "${outside}" "--output=${WORK_DIR}/outside" RESULT_VARIABLE rc ERROR_VARIABLE err)
+if(NOT rc EQUAL 0 OR NOT err MATCHES "warning: 1 input events lie outside the 8 x 6 sensor and were not processed")
+  message(FATAL_ERROR "an event outside the sensor: exit status ${rc} and: ${err}")
 endif()

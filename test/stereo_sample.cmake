@@ -6,7 +6,8 @@
 # when given); optionally the median
 # confidence of the left estimates (MEDIAN_CONFIDENCE "lo;hi", a recording's documented figure); optionally the
 # disparity the pair's events line up at (LINE_UP_DISPARITY, within 1 px) and a text the summary must hold
-# (SUMMARY_REGEX, e.g. a warning); and that the files REQUIRED_FILES names were written. EXPECTED_DISPARITY
+# (SUMMARY_REGEX, e.g. a warning) or must not hold (SUMMARY_NOT_REGEX); that stderr does not match
+# STDERR_NOT_REGEX (e.g. no warning on the built-in recording); and that the files REQUIRED_FILES names were written. EXPECTED_DISPARITY
 # may be left out where the dominant disparity means nothing (a pair given the wrong way round).
 foreach(v SAMPLE OUTPUT_DIR REQUIRED_FILES)
   if(NOT DEFINED ${v})
@@ -103,6 +104,12 @@ if(DEFINED LINE_UP_DISPARITY)
 endif()
 if(DEFINED SUMMARY_REGEX AND NOT summary MATCHES "${SUMMARY_REGEX}")
   message(FATAL_ERROR "summary.md does not say '${SUMMARY_REGEX}'")
+endif()
+if(DEFINED SUMMARY_NOT_REGEX AND summary MATCHES "${SUMMARY_NOT_REGEX}")
+  message(FATAL_ERROR "summary.md says '${SUMMARY_NOT_REGEX}'")
+endif()
+if(DEFINED STDERR_NOT_REGEX AND err MATCHES "${STDERR_NOT_REGEX}")
+  message(FATAL_ERROR "stderr says '${STDERR_NOT_REGEX}': ${err}")
 endif()
 foreach(f ${REQUIRED_FILES})
   if(NOT EXISTS "${OUTPUT_DIR}/${f}")

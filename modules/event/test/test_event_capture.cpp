@@ -287,6 +287,41 @@ TEST(Event_Capture_Text, stereo_file_grouped_by_camera_is_merged_in_time)
     std::remove(path.c_str());
 }
 
+TEST(Event_Capture_Text, progress_of_a_one_file_stereo_recording_follows_delivery)
+{
+    // One file read by two readers, one camera each: each reads a chunk far ahead (the other camera's lines
+    // skipped over), so the read position says nothing about what was delivered. Every line has the same
+    // length, so the share of the file delivered is the share of its events, whether the cameras alternate or
+    // come one after the other. Each camera has more events than a reader's chunk (16384).
+    const int n = 80000;
+    for (bool grouped : { false, true })
+    {
+        SCOPED_TRACE(grouped ? "cameras one after the other" : "cameras alternating");
+        std::ostringstream text;
+        for (int i = 0; i < n; i++)
+        {
+            const int camera = grouped ? (i < n / 2 ? 1 : 0) : i % 2;
+            const int k = grouped ? i % (n / 2) : i / 2;
+            text << cv::format("%07d %03d %03d 1 %d\n", 1000 + 10 * k, k % 128, (k / 128) % 128, camera);
+        }
+        const std::string path = writeTempFile(text.str(), ".txt");
+        EventCapture cap;
+        cap.set(EVENT_CAP_PROP_BATCH_EVENTS, 2000);
+        ASSERT_TRUE(cap.open(path));
+        EXPECT_NEAR(0.0, cap.get(EVENT_CAP_PROP_PROGRESS), 0.01);
+        std::vector<Event> packet;
+        size_t delivered = 0;
+        while (cap.read(packet))
+        {
+            delivered += packet.size();
+            ASSERT_NEAR((double)delivered / n, cap.get(EVENT_CAP_PROP_PROGRESS), 0.01) << delivered << " delivered";
+        }
+        EXPECT_EQ((size_t)n, delivered);
+        EXPECT_EQ(1.0, cap.get(EVENT_CAP_PROP_PROGRESS));
+        std::remove(path.c_str());
+    }
+}
+
 TEST(Event_Capture_Text, two_files_open_as_a_stereo_pair)
 {
     const std::string l = writeTempFile("100 1 1 1\n300 2 2 0\n", ".txt");

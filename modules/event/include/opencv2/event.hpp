@@ -28,6 +28,11 @@ for a stereo pair, its **disparity / depth** by the coupled lifetime-and-matchin
 Events travel as packets: an N x 1 Mat of type event::EVENT_MAT_TYPE or a `std::vector<event::Event>`,
 through the usual InputArray / OutputArray (see event::Event for the layout and why).
 
+Where to start: event::EventCapture reads a recording or a camera, event::StereoEventMatcher gives each event
+its disparity, depth and lifetime, event::LifetimeEstimator does the lifetimes of one camera. The manual
+(doc/ in the repository: stereo.md, lifetime.md, reading_recordings.md, live_davis.md, filters.md,
+simulator.md) says what to do and how; doc/benchmarks.md holds the figures with their commands.
+
 @{
     @defgroup event_types Event records, packets and sensor geometry
     @defgroup event_surface Surface of active events, time surfaces and event frames

@@ -121,6 +121,9 @@ public:
     std::vector<Event> raw;       // last chunk from the back-end
     std::vector<Event> pending;   // accepted events not yet delivered
     size_t pendingPos = 0;
+    // The back-end's progress before and after the chunk in `pending` was read: a chunk may span much of a
+    // small file, so progress is told by how far delivery has gone through it.
+    double chunkStartProgress = -1, chunkEndProgress = -1;
     bool readerDone = true;
     std::vector<Event> batch;     // the grabbed packet
     bool grabbed = false;
@@ -144,6 +147,7 @@ public:
         raw.clear();
         pending.clear();
         pendingPos = 0;
+        chunkStartProgress = chunkEndProgress = -1;
         readerDone = true;
         batch.clear();
         grabbed = false;
@@ -217,7 +221,7 @@ public:
             ReaderOptions left = options, right = options;
             left.cameraFilter = CAMERA_LEFT;
             right.cameraFilter = CAMERA_RIGHT;
-            r = openStereoMerge(makeReader(path, api, left), makeReader(path, api, right), rightTimeOffset);
+            r = openStereoMerge(makeReader(path, api, left), makeReader(path, api, right), rightTimeOffset, true);
         }
         start(r, path);
     }
@@ -264,6 +268,17 @@ public:
             firstTimestamp = pending[pendingPos].t;
     }
 
+    /** How far delivery has gone through the source, 0..1 (-1 when unknown). */
+    double progress() const
+    {
+        if (!reader)
+            return -1.0;
+        if (chunkStartProgress < 0 || chunkEndProgress < 0 || pendingPos >= pending.size())
+            return reader->progress();
+        return chunkStartProgress +
+               (chunkEndProgress - chunkStartProgress) * (double)pendingPos / (double)pending.size();
+    }
+
     // Moves the next decoded chunk through the bounds and time-order checks into `pending`.
     // Returns false when nothing is left; with @p wait false, also when a live source has nothing right now
     // (it is asked once, which waits a little).
@@ -273,6 +288,8 @@ public:
             return true;
         pending.clear();
         pendingPos = 0;
+        if (!readerDone)
+            chunkStartProgress = reader->progress();
         for (bool first = true; pending.empty() && !readerDone && (wait || first); first = false)
         {
             raw.clear();
@@ -285,6 +302,7 @@ public:
                     if (!why.empty())
                         lastError = why;
                 }
+                chunkEndProgress = reader->progress();
                 accept();
             }
             catch (const cv::Exception& e)
@@ -567,7 +585,7 @@ double EventCapture::get(int propId) const
     case EVENT_CAP_PROP_RIGHT_TIME_OFFSET_US: return (double)s.rightTimeOffset;
     case EVENT_CAP_PROP_STEREO: return s.reader && s.reader->isStereo() ? 1 : 0;
     case EVENT_CAP_PROP_SKIPPED: return s.reader ? (double)s.reader->skippedEvents() : 0.0;
-    case EVENT_CAP_PROP_PROGRESS: return s.reader ? s.reader->progress() : -1.0;
+    case EVENT_CAP_PROP_PROGRESS: return s.progress();
     case EVENT_CAP_PROP_TEXT_TIME_UNIT: return s.options.textTimeUnit;
     case EVENT_CAP_PROP_TEXT_ONE_BASED: return s.options.textOneBased ? 1 : 0;
     case EVENT_CAP_PROP_TEXT_COLUMN_T: return s.options.textColumnT;

@@ -45,6 +45,10 @@ public:
     virtual int64 skippedEvents() const { return 0; }
     /** Share of the file decoded so far, in [0, 1]; -1 when unknown (e.g. a pipe). */
     virtual double progress() const { return -1; }
+    /** With a camera filter on a one-file stereo recording: the share of the file's bytes read so far that
+    hold this reader's camera, so that the two cameras' readers add up to the file's progress (each one alone
+    may have skipped far ahead over the other camera's records); -1 when the back-end does not tell. */
+    virtual double ownShare() const { return -1; }
     /** True when the file holds both cameras of a stereo pair (a camera column / two streams). */
     virtual bool isStereo() const { return false; }
     /** True for a camera: next() may return nothing yet (it waits a little, not for data). */
@@ -72,7 +76,9 @@ Ptr<EventReader> openHdf5Reader(const String& path, const ReaderOptions& options
 bool isRosBag2(const String& path);
 /** Merges a left and a right stream in time order (left first on ties), setting Event::camera and adding
 @p rightTimeOffset to the right stream's timestamps. Each side is read in chunks: memory stays bounded. */
-Ptr<EventReader> openStereoMerge(const Ptr<EventReader>& left, const Ptr<EventReader>& right, int64 rightTimeOffset);
+/** Merges two readers in time order; @p oneFile: both read the same file, one camera each (see ownShare()). */
+Ptr<EventReader> openStereoMerge(const Ptr<EventReader>& left, const Ptr<EventReader>& right, int64 rightTimeOffset,
+                                 bool oneFile = false);
 
 /** Live DAVIS camera: @p selector is an index ("0") or a serial number; @p source names it in messages. */
 Ptr<EventReader> openDavisReader(const String& source, const String& selector, const ReaderOptions& options);

@@ -18,8 +18,8 @@ namespace {
 class StereoMergeReader CV_FINAL : public EventReader
 {
 public:
-    StereoMergeReader(const Ptr<EventReader>& left, const Ptr<EventReader>& right, int64 offset)
-        : offset_(offset)
+    StereoMergeReader(const Ptr<EventReader>& left, const Ptr<EventReader>& right, int64 offset, bool oneFile)
+        : offset_(offset), oneFile_(oneFile)
     {
         side_[0].reader = left;
         side_[1].reader = right;
@@ -35,7 +35,10 @@ public:
     bool isStereo() const CV_OVERRIDE { return true; }
     double progress() const CV_OVERRIDE
     {
-        return std::min(side_[0].reader->progress(), side_[1].reader->progress());
+        // One file read twice: the bytes each camera's reader has used add up; two files go as the slower one.
+        if (oneFile_ && side_[0].share() >= 0 && side_[1].share() >= 0)
+            return (side_[0].done && side_[1].done) ? 1.0 : std::min(1.0, side_[0].share() + side_[1].share());
+        return std::min(side_[0].progress(), side_[1].progress());
     }
     int64 skippedEvents() const CV_OVERRIDE
     {
@@ -133,6 +136,8 @@ private:
         std::vector<Event> buffer;
         size_t pos = 0;
         bool done = false;
+        double before = -1, after = -1;            // the reader's progress around the chunk in `buffer`
+        double shareBefore = -1, shareAfter = -1;  // and its ownShare()
 
         // One call of next() when the buffer is empty (a live reader may return nothing).
         void poll()
@@ -141,7 +146,22 @@ private:
                 return;
             buffer.clear();
             pos = 0;
+            before = reader->progress();
+            shareBefore = reader->ownShare();
             done = !reader->next(buffer);
+            after = reader->progress();
+            shareAfter = reader->ownShare();
+        }
+        /** The reader's progress told by how far the merge has taken from its chunk: one camera's chunk of a
+        one-file recording may reach far into the file (the other camera's events are skipped over). */
+        double progress() const { return taken(before, after, done ? 1.0 : reader->progress()); }
+        double share() const { return taken(shareBefore, shareAfter, reader->ownShare()); }
+        /** A figure measured before and after the chunk, at the share of the chunk taken so far. */
+        double taken(double atStart, double atEnd, double now) const
+        {
+            if (atStart < 0 || atEnd < 0 || pos >= buffer.size())
+                return now;
+            return atStart + (atEnd - atStart) * (double)pos / (double)buffer.size();
         }
         bool ready() const { return pos < buffer.size(); }
         const Event& head() const { return buffer[pos]; }
@@ -150,14 +170,16 @@ private:
 
     Side side_[2];
     int64 offset_;
+    bool oneFile_;
     Size size_;
 };
 
 }  // namespace
 
-Ptr<EventReader> openStereoMerge(const Ptr<EventReader>& left, const Ptr<EventReader>& right, int64 rightTimeOffset)
+Ptr<EventReader> openStereoMerge(const Ptr<EventReader>& left, const Ptr<EventReader>& right, int64 rightTimeOffset,
+                                 bool oneFile)
 {
-    return makePtr<StereoMergeReader>(left, right, rightTimeOffset);
+    return makePtr<StereoMergeReader>(left, right, rightTimeOffset, oneFile);
 }
 
 }  // namespace detail

@@ -72,6 +72,10 @@ public:
     bool isStereo() const CV_OVERRIDE { return camera_ >= 0; }
     Size sensorSize() const CV_OVERRIDE { return size_; }
     double progress() const CV_OVERRIDE { return in_.progress(); }
+    double ownShare() const CV_OVERRIDE
+    {
+        return opt_.cameraFilter >= 0 && in_.size() > 0 ? (double)ownBytes_ / (double)in_.size() : -1.0;
+    }
 
     bool next(std::vector<Event>& out) CV_OVERRIDE
     {
@@ -106,6 +110,7 @@ public:
                 out.pop_back();
                 continue;
             }
+            ownBytes_ += in_.offset() - lineOffset_;
             produced++;
         }
         return produced > 0;
@@ -411,6 +416,7 @@ private:
     const char* begin_ = nullptr, *end_ = nullptr;  // the line being parsed
     std::string lineText() const { return std::string(begin_, end_); }  // for messages
     int64 lineOffset_ = 0;
+    int64 ownBytes_ = 0;  // bytes of the lines delivered (of this reader's camera, with a camera filter)
     int lineNumber_ = 0;
     int columns_ = 0;
     int camera_ = -1;

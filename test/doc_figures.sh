@@ -1,0 +1,111 @@
+#!/usr/bin/env bash
+# ctest `doc_figures`: the figures the docs quote for the real recordings come from today's build. Each
+# documented command runs on ../shared/data, the figure is taken from what it prints, formatted as the docs
+# write it, and must appear in the doc that quotes it (counts exactly, percentages to the decimal the doc
+# gives). A figure that moved fails with the command, the figure and the doc to update.
+#
+#   test/doc_figures.sh <build-dir> [shared-data-dir]
+set -euo pipefail
+here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
+repo=$(cd "$here/.." && pwd)
+build=${1:?usage: doc_figures.sh <build-dir> [shared-data-dir]}
+shared=${2:-$repo/../shared/data}
+tum=$shared/stereo_dvs128_tum
+if [ ! -d "$tum" ]; then
+  echo "SKIP: $tum not found"
+  exit 0
+fi
+samples=$build/samples
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+failures=0
+
+# 136233 -> 136,233
+thousands() { printf '%s' "$1" | sed -e ':a' -e 's/\([0-9]\)\([0-9]\{3\}\)\($\|,\)/\1,\2\3/;ta'; }
+# one decimal, as the docs round
+decimal() { awk -v v="$1" 'BEGIN { printf "%.1f", v }'; }
+
+# expect DOC TEXT WHAT: the doc must quote TEXT (what the command printed, formatted as the docs write it).
+expect() {
+  if grep -qF -- "$2" "$repo/$1"; then
+    echo "ok: $1 quotes \"$2\" ($3)"
+  else
+    echo "FAIL: $1 does not quote \"$2\": $3"
+    failures=$((failures + 1))
+  fi
+}
+
+# A summary.md row's value: the text after "| LABEL ... | ".
+row() { grep -m1 -F "| $2" "$1" | sed -e 's/^[^|]*|[^|]*| //' -e 's/ |$//'; }
+
+# The confidence quartiles and the share below 0.15 as doc/simulator.md's table gives them: "p25 / median / p75 | x %".
+confidence() { row "$1" "confidence of the left estimates" | sed 's/ (\([0-9.]*\) % below 0.15)$/ | \1 %/'; }
+
+stereo() {  # stereo OUTPUT-NAME ARGS...: event_stereo on a recording, its summary in $work/NAME
+  local name=$1
+  shift
+  "$samples/event_stereo" "$@" --no-csv --output="$work/$name" > /dev/null 2> "$work/$name.err"
+}
+
+# Fan, the right way round: its share at 8 px, its row estimate (doc/stereo.md); event counts (filters.md,
+# benchmarks.md); the median confidence (README, a regression pin's today figure).
+stereo fan --input="$tum/Fan_disp8.dat" --sensor=DVS128 --left-camera-value=1
+share=$(row "$work/fan/summary.md" "dominant disparity" | sed -n 's/^8 px (\([0-9.]*\) %.*/\1/p')
+expect doc/stereo.md "$(decimal "$share") % of its estimates at its 8 px" "event_stereo --input=Fan_disp8.dat --sensor=DVS128 --left-camera-value=1: dominant disparity"
+sides=$(row "$work/fan/summary.md" "row alignment" | sed -n 's/.*up to \([0-9.]*\) px at the sides.*/\1/p')
+expect doc/stereo.md "up to $sides px at the sides" "the same run: row alignment"
+fanMedian=$(row "$work/fan/summary.md" "confidence of the left estimates" | awk -F' / ' '{ print $2 }')
+events=$(row "$work/fan/summary.md" "events |" | awk '{ print $1 }')
+expect doc/filters.md "| $(thousands "$events") |" "the same run: events"
+
+# movingPersons both ways round (doc/stereo.md).
+stereo mp --input="$tum/movingPersons.dat" --sensor=DVS128 --one-based
+with=$(row "$work/mp/summary.md" "events with a disparity" | awk '{ print $1 }')
+at13=$(row "$work/mp/summary.md" "dominant disparity" | sed -n 's/^13 px (\([0-9.]*\) %.*/\1/p')
+expect doc/stereo.md "against $(decimal "$with") % the right way round, $(decimal "$at13") % of those at 13 px" \
+  "event_stereo --input=movingPersons.dat --sensor=DVS128 --one-based"
+stereo mp_swapped --input="$tum/movingPersons.dat" --sensor=DVS128 --one-based --left-camera-value=1
+with=$(row "$work/mp_swapped/summary.md" "events with a disparity" | awk '{ print $1 }')
+expect doc/stereo.md "movingPersons: $(decimal "$with") % of its events get a disparity" \
+  "event_stereo --input=movingPersons.dat --sensor=DVS128 --one-based --left-camera-value=1"
+mpMedian=$(row "$work/mp/summary.md" "confidence of the left estimates" | awk -F' / ' '{ print $2 }')
+expect README.md "today $fanMedian and $mpMedian" "event_stereo on Fan and movingPersons: median confidence"
+
+# The pendulum: every event accounted for (README).
+stereo pendulum --input="$tum/pendulum_left_30cm_2.tsv.txt" --sensor=DVS128 --max-disparity=50
+processed=$(row "$work/pendulum/summary.md" "events |" | awk '{ print $1 }')
+outside=$(row "$work/pendulum/summary.md" "input events outside the sensor" | awk '{ print $1 }')
+expect README.md "every one of the pendulum's $(thousands $((processed + outside))) events ($(thousands "$outside") lie outside" \
+  "event_stereo on pendulum_left_30cm_2.tsv.txt: events and events outside the sensor"
+
+# How clear-cut the matches are on each TUM recording (doc/simulator.md, the commands above it).
+stereo faraway --input="$tum/movingPersonFaraway.dat" --sensor=DVS128 --one-based
+for pair in "fan:Fan" "mp:movingPersons" "faraway:movingPersonFaraway" "pendulum:pendulum"; do
+  expect doc/simulator.md "| TUM ${pair#*:} | $(confidence "$work/${pair%%:*}/summary.md") |" "event_stereo on ${pair#*:}: confidence quartiles"
+done
+
+# The hot-pixel filter on Fan (doc/filters.md).
+for rate in 10 5; do
+  "$samples/event_player" "$tum/Fan_disp8.dat" --sensor=DVS128 --filter=hot_pixels --filter-set=relativeRate=$rate \
+    --output="$work/hot$rate" > /dev/null 2> "$work/hot$rate.err"
+  read -r kept total < <(tr '\r' '\n' < "$work/hot$rate.err" | sed -n 's/^hot_pixels kept \([0-9]*\) of \([0-9]*\) events$/\1 \2/p')
+  removed=$((total - kept))
+  expect doc/filters.md "$(thousands "$removed") ($(decimal "$(awk -v r=$removed -v t=$total 'BEGIN { print 100 * r / t }')") %)" \
+    "event_player Fan_disp8.dat --sensor=DVS128 --filter=hot_pixels --filter-set=relativeRate=$rate"
+done
+
+# Which TUM files count pixels from 1 (doc/reading_recordings.md).
+"$samples/event_info" "$tum/movingPersons.dat" "$tum/movingPersonFaraway.dat" "$tum/Fan_disp8.dat" > "$work/info.txt"
+ranges=$(sed -n 's/^  pixels:    //p' "$work/info.txt" | tr '\n' ';')
+if [ "$ranges" = "x 1..128, y 1..128;x 1..128, y 1..128;x 0..127, y 0..127;" ]; then
+  expect doc/reading_recordings.md "movingPersonFaraway count from 1, x and y 1..128" "event_info: pixels"
+else
+  echo "FAIL: event_info gives the TUM files' pixels as $ranges: doc/reading_recordings.md says otherwise"
+  failures=$((failures + 1))
+fi
+
+if [ "$failures" -gt 0 ]; then
+  echo "doc_figures: $failures figures differ from what today's build prints: update the docs (or find what changed)"
+  exit 1
+fi
+echo "doc_figures: every checked figure is today's"
