@@ -143,4 +143,18 @@ TEST(Event_Capture_Real, rosbag2_libcaer_rollover)
     }
 }
 
+// The data README: a ROS2 sqlite3 bag whose topics table names event_array_msgs/msg/EventArray (EventPacket's
+// name before its 2023 rename; its metadata.yaml says EventPacket): 378,266 events (139,584 ON / 238,682 OFF).
+TEST(Event_Capture_Real, rosbag2_legacy_event_array_name)
+{
+    EventCapture cap(requireSharedData("format_samples/ecpy_legacy_eventarray_ros2"));
+    EXPECT_EQ("ROSBAG2", cap.getBackendName());
+    const std::vector<Event> ev = readAllEvents(cap);
+    ASSERT_EQ(378266u, ev.size());
+    size_t on = 0;
+    for (const Event& e : ev)
+        on += e.p;
+    EXPECT_EQ(139584u, on);
+}
+
 }} // namespace

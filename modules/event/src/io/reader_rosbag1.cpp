@@ -5,7 +5,8 @@
 // ROS1 bag v2.0 without ROS (layout: doc/formats.md, "ROS1 bag"). Records {u32 header length, header fields
 // "name=value", u32 data length, data}; chunks (op 5) hold compressed records (none / bz2 / lz4 frames).
 // The connection records at the index position name the topics; event topics are those of type
-// dvs_msgs/EventArray or event_camera_msgs/EventPacket, sorted by name: the first is the left camera,
+// dvs_msgs/EventArray or event_camera_msgs/EventPacket (or its former name event_array_msgs/EventArray),
+// sorted by name: the first is the left camera,
 // a second one makes the bag a stereo recording. The walk goes chunk by chunk: memory is one chunk.
 
 #include "precomp.hpp"
@@ -33,6 +34,9 @@ const size_t kMaxRecordBytes = (size_t)1 << 30;  // a corrupt length must not be
 
 const char* kDvsEventArray = "dvs_msgs/EventArray";
 const char* kEventPacket = "event_camera_msgs/EventPacket";
+const char* kLegacyEventArray = "event_array_msgs/EventArray";  // EventPacket before its 2023 rename: same layout
+
+bool isEventPacket(const std::string& type) { return type == kEventPacket || type == kLegacyEventArray; }
 const char* kDvsMd5 = "5e8beee5a6c107e504c2e78903c224b8";             // Header, height, width, events
 const char* kDvsForkMd5 = "732c9cc0676a970b9aa2873b0d444ac2";         // Header, events, height, width
 
@@ -108,7 +112,7 @@ public:
                 if (op(h, pos) == 7)
                 {
                     const Connection c = connection(h, data, pos);
-                    if (c.type == kDvsEventArray || c.type == kEventPacket)
+                    if (c.type == kDvsEventArray || isEventPacket(c.type))
                         eventTopics[c.topic] = true;
                 }
             }
@@ -118,7 +122,7 @@ public:
         for (const auto& kv : eventTopics)
             topics.push_back(kv.first);
         if (indexPos > 0 && topics.empty())
-            formatError(path, (int64)indexPos, "the bag has no dvs_msgs/EventArray or event_camera_msgs/EventPacket topic");
+            formatError(path, (int64)indexPos, "the bag has no dvs_msgs/EventArray or event_camera_msgs/EventPacket (or event_array_msgs/EventArray) topic");
         stereo_ = options.cameraFilter < 0 && topics.size() >= 2;
         const int pick = std::max(0, options.cameraFilter);
         if (!topics.empty())
@@ -210,7 +214,7 @@ private:
     {
         const uint32_t id = fieldAs<uint32_t>(h, "conn", in_.path(), at);
         const Connection c = connection(h, data, at);
-        if (topic_.empty() && (c.type == kDvsEventArray || c.type == kEventPacket))
+        if (topic_.empty() && (c.type == kDvsEventArray || isEventPacket(c.type)))
             topic_ = c.topic;  // unindexed bag: the first event topic
         connections_[id] = c;
     }
@@ -292,7 +296,7 @@ private:
         m.read<uint32_t>("header stamp");
         m.read<uint32_t>("header stamp");
         m.string("header frame_id", false);
-        if (c.type == kEventPacket)
+        if (isEventPacket(c.type))
         {
             const uint32_t height = m.read<uint32_t>("height"), width = m.read<uint32_t>("width");
             note(width, height);

@@ -4,7 +4,8 @@
 
 // ROS2 bags in the sqlite3 storage (a folder with metadata.yaml and *.db3 files, or one .db3 file):
 // table topics(id, name, type, ...) and messages(topic_id, timestamp, data), data = CDR-serialised
-// event_camera_msgs/msg/EventPacket (encodings evt3, libcaer). Messages are stepped through one at a time
+// event_camera_msgs/msg/EventPacket or its former name event_array_msgs/msg/EventArray (encodings evt3,
+// libcaer). Messages are stepped through one at a time
 // (ordered by timestamp): memory is one message. Two event topics make a stereo recording (sorted by name:
 // the first is the left camera).
 
@@ -41,6 +42,7 @@ bool isRosBag2(const String& path)
 namespace {
 
 const char* kEventPacket2 = "event_camera_msgs/msg/EventPacket";
+const char* kLegacyEventArray2 = "event_array_msgs/msg/EventArray";  // EventPacket before its 2023 rename: same layout
 
 // The .db3 files of a bag: those metadata.yaml lists under relative_file_paths, in order.
 std::vector<std::string> bagFiles(const String& path)
@@ -135,13 +137,15 @@ private:
         open(0);
         // Event topics of the first file, sorted by name.
         std::vector<std::pair<std::string, int>> topics;
-        sqlite3_stmt* q = prepare("SELECT name, id FROM topics WHERE type = ? ORDER BY name");
+        sqlite3_stmt* q = prepare("SELECT name, id FROM topics WHERE type = ? OR type = ? ORDER BY name");
         sqlite3_bind_text(q, 1, kEventPacket2, -1, SQLITE_STATIC);
+        sqlite3_bind_text(q, 2, kLegacyEventArray2, -1, SQLITE_STATIC);
         while (sqlite3_step(q) == SQLITE_ROW)
             topics.push_back(std::make_pair(std::string((const char*)sqlite3_column_text(q, 0)), sqlite3_column_int(q, 1)));
         sqlite3_finalize(q);
         if (topics.empty())
-            CV_Error_(Error::StsParseError, ("%s: no %s topic in the bag", files_[0].c_str(), kEventPacket2));
+            CV_Error_(Error::StsParseError, ("%s: no %s (or %s) topic in the bag", files_[0].c_str(), kEventPacket2,
+                                             kLegacyEventArray2));
         stereo_ = options.cameraFilter < 0 && topics.size() >= 2;
         const int pick = std::max(0, options.cameraFilter);
         if (pick >= (int)topics.size())
