@@ -70,6 +70,40 @@ TEST(Event_Capture_Aedat2, dvs128_polarity_bit_zero_is_on_and_version_1_records)
     std::remove(path.c_str());
 }
 
+TEST(Event_Capture_Aedat2, without_a_chip_line_the_named_sensor_chooses_the_layout)
+{
+    // jAER's MATLAB export (saveaerdat.m) writes no "# AEChip:" line.
+    std::string f = "#!AER-DAT2.0\n# This is a raw AE data file created by saveaerdat.m\n";
+    appendBE(f, (10u << 8) | (20u << 1) | 0u, 4); appendBE(f, 50, 4);  // as a DVS128: raw (20, 10) ON -> (107, 117)
+    const std::string path = writeTempFile(f, ".aedat");
+    {
+        EventCapture cap;
+        cap.set(EVENT_CAP_PROP_EXCEPTION_MODE, 0);
+        EXPECT_FALSE(cap.open(path));
+        EXPECT_NE(std::string::npos, cap.getLastError().find("give the sensor (--sensor=DVS128")) << cap.getLastError();
+    }
+    for (int width : { 128, 240 })
+    {
+        EventCapture cap;
+        cap.set(EVENT_CAP_PROP_SENSOR_WIDTH, width);
+        cap.set(EVENT_CAP_PROP_SENSOR_HEIGHT, width == 128 ? 128 : 180);
+        ASSERT_TRUE(cap.open(path));
+        // As a DAVIS240 address the same word is raw x = (word >> 12) & 0x3FF = 0, y = 0, bit 11 set: ON at
+        // the bottom-left, (239, 179) in top-left coordinates.
+        const Event expected = width == 128 ? Event(50, 107, 117, POLARITY_ON) : Event(50, 239, 179, POLARITY_ON);
+        EXPECT_EQ(std::vector<Event>{ expected }, readAllEvents(cap)) << width;
+    }
+    {
+        EventCapture odd;
+        odd.set(EVENT_CAP_PROP_EXCEPTION_MODE, 0);
+        odd.set(EVENT_CAP_PROP_SENSOR_WIDTH, 100);
+        odd.set(EVENT_CAP_PROP_SENSOR_HEIGHT, 100);
+        EXPECT_FALSE(odd.open(path));
+        EXPECT_NE(std::string::npos, odd.getLastError().find("a 100 x 100 sensor is none of")) << odd.getLastError();
+    }
+    std::remove(path.c_str());
+}
+
 TEST(Event_Capture_Aedat2, unknown_chip_and_truncation_are_errors)
 {
     std::string f = "#!AER-DAT2.0\n# AEChip: some.unknown.Chip\n";

@@ -49,6 +49,22 @@ public:
                 chip.erase(0, chip.find_first_not_of(' '));
             }
         }
+        // Without a chip line (jAER's MATLAB export writes none) the sensor the user names chooses the layout.
+        const Size given = options.sensorSize;
+        if (chip.empty() && recordSize_ == 8)
+        {
+            if (given == Size(128, 128))
+                chip = "DVS128 (as given)";
+            else if (given == Size(240, 180) || given == Size(346, 260) || given == Size(640, 480))
+                chip = cv::format("DAVIS%d (as given)", given.width);
+            else
+                formatError(path, 0, given.empty()
+                    ? std::string("no \"# AEChip:\" header line: the address layout is unknown; give the sensor "
+                                  "(--sensor=DVS128, DAVIS240, DAVIS346 or DAVIS640; EVENT_CAP_PROP_SENSOR_WIDTH / "
+                                  "_HEIGHT)")
+                    : cv::format("no \"# AEChip:\" header line, and a %d x %d sensor is none of DVS128, DAVIS240, "
+                                 "DAVIS346, DAVIS640: the address layout is unknown", given.width, given.height));
+        }
         const std::string lower = toLowerAscii(chip);
         if (lower.find("dvs128") != std::string::npos || (chip.empty() && recordSize_ == 6))
         {
