@@ -103,9 +103,9 @@ Info probe(const std::string& path, Size sensor, bool oneBased, int leftValue, b
     Info info;
     CameraStatistics statistics(withStatistics);
     info.file = path;
+    EventCapture cap;
     try
     {
-        EventCapture cap;
         cap.set(EVENT_CAP_PROP_SENSOR_WIDTH, sensor.width);
         cap.set(EVENT_CAP_PROP_SENSOR_HEIGHT, sensor.height);
         cap.set(EVENT_CAP_PROP_TEXT_ONE_BASED, oneBased);
@@ -122,14 +122,17 @@ Info probe(const std::string& path, Size sensor, bool oneBased, int leftValue, b
         {
             countPacket(info, packet, statistics);
         }
+    }
+    catch (const cv::Exception& e)
+    {
+        info.error = e.err;  // after the events read before it (a file cut off mid-record: the user's data)
+    }
+    if (!info.format.empty())
+    {
         info.cameras = statistics.result(info.stereo);
         info.rejected = cap.get(EVENT_CAP_PROP_REJECTED_OUTSIDE);
         info.backwards = cap.get(EVENT_CAP_PROP_TIME_BACKWARDS);
         info.skipped = cap.get(EVENT_CAP_PROP_SKIPPED);
-    }
-    catch (const cv::Exception& e)
-    {
-        info.error = e.err;
     }
     return info;
 }
@@ -188,7 +191,7 @@ void printJson(const Info& i, bool last)
     std::cout << "  {\"file\": " << jsonString(i.file);
     if (!i.error.empty())
         std::cout << ", \"error\": " << jsonString(i.error);
-    else
+    if (!i.format.empty())  // opened: what was read, also before an error
         std::cout << ", \"format\": " << jsonString(i.format) << ", \"width\": " << i.size.width
                   << ", \"height\": " << i.size.height << ", \"stereo\": " << (i.stereo ? "true" : "false")
                   << ", \"events\": " << i.events << ", \"on\": " << i.on << ", \"off\": " << i.events - i.on
@@ -216,10 +219,22 @@ void printJson(const Info& i, bool last)
     std::cout << "}" << (last ? "" : ",") << "\n";
 }
 
+// What EVENT_CAP_PROP_SKIPPED counts for this back-end: events the file holds that cannot be delivered.
+std::string skippedMeaning(const std::string& format)
+{
+    if (format == "AEDAT3")
+        return "marked invalid by their recorder";
+    if (format == "DAVIS")
+        return "sent before the clock reset";
+    if (format.compare(0, 13, "PROPHESEE_EVT") == 0 || format == "ROSBAG1" || format == "ROSBAG2")
+        return "without time base";
+    return "not deliverable";
+}
+
 void printText(const Info& i)
 {
     std::cout << i.file << "\n";
-    if (!i.error.empty())
+    if (!i.error.empty() && i.format.empty())  // not opened
     {
         std::cout << "  error:     " << i.error << "\n";
         return;
@@ -237,7 +252,7 @@ void printText(const Info& i)
     std::cout << "  time:      " << i.first << " .. " << i.last << " us, duration "
               << (i.events ? (i.last - i.first) / 1e6 : 0.0) << " s\n"
               << "  rejected:  " << (int64)i.rejected << " outside the sensor, " << (int64)i.backwards
-              << " going back in time, " << (int64)i.skipped << " without time base\n";
+              << " going back in time, " << (int64)i.skipped << " " << skippedMeaning(i.format) << "\n";
     if (i.rejected > 0)
         std::cout << "             (outside the sensor: "
                   << outsideEventsAdvice(i.format == "TEXT", i.oneBased, i.events > 0 && (i.xMin == 0 || i.yMin == 0))
@@ -256,6 +271,8 @@ void printText(const Info& i)
                   << 100 * st.isolatedShare << " % isolated, " << 100 * st.activePixelShare
                   << " % of pixels active in 10 ms\n";
     }
+    if (!i.error.empty())  // read up to there: the figures above are what came before it
+        std::cout << "  error:     " << i.error << "\n";
 }
 
 // --stats: every file's and scene's cameras side by side.

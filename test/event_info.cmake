@@ -1,5 +1,6 @@
 # ctest `event_info_cli`: event_info on a fixture whose facts are known by construction, on a missing file
-# (exit status 1, the error names the file) and on command-line mistakes (exit status 2).
+# (exit status 1, the error names the file), on a file cut off mid-line (what came before, then the error) and on
+# command-line mistakes (exit status 2).
 file(MAKE_DIRECTORY "${WORK_DIR}")
 set(fixture "${WORK_DIR}/three_events.txt")
 file(WRITE "${fixture}" "# fixture\n8 6\n0.001 1 2 1 0\n0.002 3 4 0 1\n0.005 7 5 1 1\n0.006 9 9 1 0\n")
@@ -64,3 +65,11 @@ foreach(case "--sensor;DVS128;${fixture}|--sensor needs a value: write --sensor=
     message(FATAL_ERROR "event_info ${parts}: exit status ${rc} and \"${err}\", expected 2 and \"${expected}\"")
   endif()
 endforeach()
+# A recording cut off inside its last line (a recorder stopped mid-write): what came before the cut is shown,
+# then the error names the byte and the line (exit status 1).
+set(cut "${WORK_DIR}/cut.txt")
+file(WRITE "${cut}" "8 6\n0.001 1 2 1\n0.002 3 4 0\n0.003 7 5")
+execute_process(COMMAND "${EVENT_INFO}" "${cut}" RESULT_VARIABLE rc OUTPUT_VARIABLE out)
+if(NOT rc EQUAL 1 OR NOT out MATCHES "events:    2 \\(ON 1, OFF 1\\)" OR NOT out MATCHES "error:     [^\n]*cut.txt: byte 28: line 4")
+  message(FATAL_ERROR "a cut-off file gave exit status ${rc} and: ${out}")
+endif()

@@ -104,7 +104,7 @@ TEST(Event_Capture_Aedat2, without_a_chip_line_the_named_sensor_chooses_the_layo
     std::remove(path.c_str());
 }
 
-TEST(Event_Capture_Aedat2, unknown_chip_and_truncation_are_errors)
+TEST(Event_Capture_Aedat2, an_unknown_chip_is_refused_and_a_cut_off_file_delivers_its_whole_records_first)
 {
     std::string f = "#!AER-DAT2.0\n# AEChip: some.unknown.Chip\n";
     appendBE(f, 0, 4); appendBE(f, 0, 4);
@@ -118,12 +118,20 @@ TEST(Event_Capture_Aedat2, unknown_chip_and_truncation_are_errors)
     appendBE(g, davisAddress(1, 1, 1), 4); appendBE(g, 5, 4);
     g += std::string("\x00\x01\x02", 3);
     path = writeTempFile(g, ".aedat");
-    try { EventCapture cap(path); FAIL() << "truncated file accepted"; }
+    EventCapture cap(path);
+    std::vector<Event> delivered, packet;
+    try
+    {
+        while (cap.read(packet))
+            delivered.insert(delivered.end(), packet.begin(), packet.end());
+        FAIL() << "truncated file read as whole";
+    }
     catch (const cv::Exception& e)
     {
         EXPECT_NE(std::string::npos, e.err.find(path)) << e.err;
         EXPECT_NE(std::string::npos, e.err.find("byte " + std::to_string(header + 8))) << e.err;
     }
+    EXPECT_EQ(1u, delivered.size());  // the record before the cut
     std::remove(path.c_str());
 }
 

@@ -92,7 +92,7 @@ TEST(Event_Capture_Raw, unsupported_encoding_and_truncation_are_errors)
     appendWord<uint32_t>(f, (0x8u << 28) | 1u);
     f += "\x01\x02";  // half a word
     const std::string cut = writeTempFile(f, ".raw");
-    try { EventCapture cap(cut); FAIL() << "truncated EVT2 accepted"; }
+    try { EventCapture cap(cut); readAllEvents(cap); FAIL() << "truncated EVT2 accepted"; }
     catch (const cv::Exception& e)
     {
         EXPECT_NE(std::string::npos, e.err.find(cut)) << e.err;

@@ -302,18 +302,34 @@ public:
                     if (!why.empty())
                         lastError = why;
                 }
-                chunkEndProgress = reader->progress();
+            }
+            catch (const cv::Exception& e)
+            {
+                // The events decoded before the error (a file cut off inside a line or a record) are the user's
+                // data: they are delivered, then the error is raised (raiseDeferredError).
+                deferError(e);
+            }
+            chunkEndProgress = reader->progress();
+            try
+            {
                 accept();
             }
             catch (const cv::Exception& e)
             {
-                // Deliver what was decoded before the error, then raise it (raiseDeferredError).
-                deferredError = e.err;
-                deferredCode = e.code;
-                readerDone = true;
+                deferError(e);
             }
         }
         return !pending.empty();
+    }
+
+    void deferError(const cv::Exception& e)
+    {
+        if (deferredError.empty())
+        {
+            deferredError = e.err;
+            deferredCode = e.code;
+        }
+        readerDone = true;
     }
 
     void raiseDeferredError()

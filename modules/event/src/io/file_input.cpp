@@ -137,14 +137,23 @@ void FileInput::seek(int64 offset)
     pos_ = end_ = buffer_.data();
 }
 
-void FileInput::checkWholeRecords(size_t recordSize, const char* what) const
+size_t FileInput::readRecords(void* dst, size_t n, size_t recordSize, const char* what)
 {
-    if (size_ < 0)
-        return;
-    const int64 rest = (size_ - offset()) % (int64)recordSize;
+    CV_Assert(recordSize > 0 && n >= recordSize);
+    if (truncatedAt_ >= 0)
+        formatError(path_, truncatedAt_, format("truncated: the file ends %zu bytes into a %zu-byte %s",
+                                                truncatedBytes_, recordSize, what));
+    const int64 at = offset();
+    const size_t got = read(dst, n - n % recordSize);
+    const size_t rest = got % recordSize;
     if (rest != 0)
-        formatError(path_, size_ - rest, format("truncated: %lld trailing bytes do not make a %zu-byte %s",
-                                                (long long)rest, recordSize, what));
+    {
+        truncatedAt_ = at + (int64)(got - rest);
+        truncatedBytes_ = rest;
+        if (got == rest)
+            return readRecords(dst, n, recordSize, what);  // nothing whole before the cut: raises now
+    }
+    return got - rest;
 }
 
 std::string fileExtension(const String& path)

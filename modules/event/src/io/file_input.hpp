@@ -53,12 +53,15 @@ public:
     int peek();
     /** Moves to an absolute offset. */
     void seek(int64 offset);
-    /** For formats of fixed-size records from the current offset to the end: raises formatError("truncated:
-    ...") at the first byte of an incomplete last @p what when the remaining size is not a multiple of
-    @p recordSize. Does nothing when the size is unknown (a pipe). */
-    void checkWholeRecords(size_t recordSize, const char* what) const;
+    /** For formats of fixed-size records: reads up to @p n bytes of whole records of @p recordSize bytes;
+    0 at the end. A file cut off inside a record (a camera unplugged, a disk full) gives the whole records
+    before the cut first; the call after them raises formatError("truncated: ...") at the first byte of the
+    incomplete @p what, so that a reader delivers the user's data and then says where it stops. */
+    size_t readRecords(void* dst, size_t n, size_t recordSize, const char* what);
 
 private:
+    int64 truncatedAt_ = -1;  // readRecords(): where the incomplete last record starts
+    size_t truncatedBytes_ = 0;
     bool refill();
 
     String path_;

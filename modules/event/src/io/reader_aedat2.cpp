@@ -83,7 +83,6 @@ public:
         if (!options.sensorSize.empty() && options.sensorSize != size_)
             CV_Error_(Error::StsBadArg, ("%s: the file is from a %d x %d sensor (%s); a different sensor size was set",
                                          path.c_str(), size_.width, size_.height, chip.c_str()));
-        in_.checkWholeRecords((size_t)recordSize_, "AEDAT record");
     }
 
     String name() const CV_OVERRIDE { return "AEDAT2"; }
@@ -96,7 +95,7 @@ public:
         unsigned char buf[8 * 8192];
         while (out.size() == before)
         {
-            const size_t got = in_.read(buf, sizeof(buf) / 8 * recordSize_);
+            const size_t got = in_.readRecords(buf, sizeof(buf) / 8 * recordSize_, (size_t)recordSize_, "AEDAT record");
             if (got == 0)
                 return false;
             for (size_t i = 0; i + recordSize_ <= got; i += recordSize_)

@@ -43,7 +43,6 @@ public:
         if (typeAndSize[1] != 8)
             formatError(in_.path(), in_.offset() - 1,
                         format("event size %d; only 8-byte CD event records are supported", typeAndSize[1]));
-        in_.checkWholeRecords(8, "event record");
     }
 
     String name() const CV_OVERRIDE { return "PROPHESEE_DAT"; }
@@ -53,11 +52,7 @@ public:
     bool next(std::vector<Event>& out) CV_OVERRIDE
     {
         uint32_t words[2 * 4096];
-        const int64 at = in_.offset();
-        const size_t got = in_.read(words, sizeof(words));
-        if (got % 8 != 0)
-            formatError(in_.path(), at + (int64)(got / 8) * 8, "truncated: the last event record is incomplete");
-        const size_t n = got / 8;
+        const size_t n = in_.readRecords(words, sizeof(words), 8, "event record") / 8;
         for (size_t i = 0; i < n; i++)
         {
             const uint32_t t32 = words[2 * i], data = words[2 * i + 1];

@@ -62,7 +62,6 @@ public:
         }
         if (!options.sensorSize.empty())
             size_ = options.sensorSize;
-        in_.checkWholeRecords(version_ == 3 ? 2 : 4, "EVT word");
     }
 
     String name() const CV_OVERRIDE { return version_ == 3 ? "PROPHESEE_EVT3" : "PROPHESEE_EVT2"; }
@@ -75,7 +74,7 @@ public:
         const size_t before = out.size();
         while (out.size() == before)
         {
-            const size_t got = in_.read(buffer_, sizeof(buffer_));
+            const size_t got = in_.readRecords(buffer_, sizeof(buffer_), version_ == 3 ? 2 : 4, "EVT word");
             if (got == 0)
                 return false;
             if (version_ == 2)

@@ -9,6 +9,8 @@
 #include "precomp.hpp"
 #include "io/event_reader.hpp"
 
+#include <exception>
+
 namespace cv {
 namespace event {
 namespace detail {
@@ -97,7 +99,8 @@ public:
                 Side& empty = lr ? r : l;
                 const int64 head = lr ? l.head().t - offset_ : r.head().t + offset_;  // in the empty side's clock
                 const int64 horizon = empty.reader->timeHorizon();
-                const bool ruledOut = empty.done || (horizon != INT64_MIN && (lr ? horizon >= head : horizon > head));
+                const bool ruledOut = empty.done || empty.error ||
+                                      (horizon != INT64_MIN && (lr ? horizon >= head : horizon > head));
                 if (!ruledOut)
                 {
                     if (produced > 0)
@@ -113,6 +116,8 @@ public:
             {
                 if ((l.done && r.done) || produced > 0)
                     break;
+                if (l.error || r.error)
+                    std::rethrow_exception(l.error ? l.error : r.error);
                 l.poll();
                 r.poll();
                 if (!l.ready() && !r.ready() && isLive())
@@ -136,6 +141,7 @@ private:
         std::vector<Event> buffer;
         size_t pos = 0;
         bool done = false;
+        std::exception_ptr error;                  // raised by the reader after the events in `buffer`
         double before = -1, after = -1;            // the reader's progress around the chunk in `buffer`
         double shareBefore = -1, shareAfter = -1;  // and its ownShare()
 
@@ -144,11 +150,22 @@ private:
         {
             if (pos < buffer.size() || done)
                 return;
+            if (error)
+                return;
             buffer.clear();
             pos = 0;
             before = reader->progress();
             shareBefore = reader->ownShare();
-            done = !reader->next(buffer);
+            try
+            {
+                done = !reader->next(buffer);
+            }
+            catch (const cv::Exception&)
+            {
+                // The events decoded before the error (a file cut off mid-line) and those the other camera
+                // has buffered are merged first; the error comes when nothing else is left to merge.
+                error = std::current_exception();
+            }
             after = reader->progress();
             shareAfter = reader->ownShare();
         }

@@ -104,7 +104,15 @@ public:
             // Parsed straight into the output: an Event built on the stack in narrow stores and copied with one
             // wide load stalled on store forwarding (a fifth of the reader's time).
             out.emplace_back();
-            parse(out.back());
+            try
+            {
+                parse(out.back());
+            }
+            catch (const cv::Exception&)
+            {
+                out.pop_back();  // what was parsed of the bad line is no event; the lines before it are delivered
+                throw;
+            }
             if (opt_.cameraFilter >= 0 && out.back().camera != opt_.cameraFilter)
             {
                 out.pop_back();
