@@ -47,16 +47,14 @@ stereo() {  # stereo OUTPUT-NAME ARGS...: event_stereo on a recording, its summa
   "$samples/event_stereo" "$@" --no-csv --output="$work/$name" > /dev/null 2> "$work/$name.err"
 }
 
-# Fan, the right way round: its share at 8 px, its row estimate (doc/stereo.md); event counts (filters.md,
-# benchmarks.md); the median confidence (README, a regression pin's today figure).
+# Fan, the right way round: its share at 8 px, its row estimate (doc/stereo.md); the median confidence
+# (README, a regression pin's today figure).
 stereo fan --input="$tum/Fan_disp8.dat" --sensor=DVS128 --left-camera-value=1
 share=$(row "$work/fan/summary.md" "dominant disparity" | sed -n 's/^8 px (\([0-9.]*\) %.*/\1/p')
 expect doc/stereo.md "$(decimal "$share") % of its estimates at its 8 px" "event_stereo --input=Fan_disp8.dat --sensor=DVS128 --left-camera-value=1: dominant disparity"
 sides=$(row "$work/fan/summary.md" "row alignment" | sed -n 's/.*up to \([0-9.]*\) px at the sides.*/\1/p')
 expect doc/stereo.md "up to $sides px at the sides" "the same run: row alignment"
 fanMedian=$(row "$work/fan/summary.md" "confidence of the left estimates" | awk -F' / ' '{ print $2 }')
-events=$(row "$work/fan/summary.md" "events |" | awk '{ print $1 }')
-expect doc/filters.md "| $(thousands "$events") |" "the same run: events"
 
 # movingPersons both ways round (doc/stereo.md).
 stereo mp --input="$tum/movingPersons.dat" --sensor=DVS128 --one-based
@@ -84,14 +82,51 @@ for pair in "fan:Fan" "mp:movingPersons" "faraway:movingPersonFaraway" "pendulum
   expect doc/simulator.md "| TUM ${pair#*:} | $(confidence "$work/${pair%%:*}/summary.md") |" "event_stereo on ${pair#*:}: confidence quartiles"
 done
 
-# The hot-pixel filter on Fan (doc/filters.md).
-for rate in 10 5; do
-  "$samples/event_player" "$tum/Fan_disp8.dat" --sensor=DVS128 --filter=hot_pixels --filter-set=relativeRate=$rate \
-    --output="$work/hot$rate" > /dev/null 2> "$work/hot$rate.err"
-  read -r kept total < <(tr '\r' '\n' < "$work/hot$rate.err" | sed -n 's/^hot_pixels kept \([0-9]*\) of \([0-9]*\) events$/\1 \2/p')
-  removed=$((total - kept))
-  expect doc/filters.md "$(thousands "$removed") ($(decimal "$(awk -v r=$removed -v t=$total 'BEGIN { print 100 * r / t }')") %)" \
-    "event_player Fan_disp8.dat --sensor=DVS128 --filter=hot_pixels --filter-set=relativeRate=$rate"
+# How the TUM recordings' streams look (doc/simulator.md's statistics table, its commands): the left camera's
+# figures and the right camera's event count over the left one's, as event_info --stats' table gives them.
+statsRow() {  # statsRow NAME ARGS...: "| TUM NAME (DVS128) | kev/s | right / left | ON | ... |"
+  local name=$1
+  shift
+  "$samples/event_info" --stats --sensor=DVS128 "$@" > "$work/stats.txt"
+  awk -F' [|] ' -v name="$name" '
+    $2 == "left" { left = $3 " | RATIO | " $5 " | " $6 " | " $7 " | " $8 " | " $9 }
+    $2 == "right" { ratio = $4 }
+    END { sub(/ [|]$/, "", left); sub("RATIO", ratio, left); print "| TUM " name " (DVS128) | " left " |" }' \
+    <(grep '^| /' "$work/stats.txt")
+}
+expect doc/simulator.md "$(statsRow Fan --left-camera-value=1 "$tum/Fan_disp8.dat")" "event_info --stats on Fan_disp8.dat"
+expect doc/simulator.md "$(statsRow movingPersons --one-based "$tum/movingPersons.dat")" "event_info --stats on movingPersons.dat"
+expect doc/simulator.md "$(statsRow movingPersonFaraway --one-based "$tum/movingPersonFaraway.dat")" \
+  "event_info --stats on movingPersonFaraway.dat"
+expect doc/simulator.md "$(statsRow pendulum "$tum/pendulum_left_30cm_2.tsv.txt")" "event_info --stats on pendulum_left_30cm_2.tsv.txt"
+
+for pair in "aestream_davis346.aedat4:DAVIS346 sample (aestream, mono)" "tonic_sample_dvxplorer.aedat4:DVXplorer sample (tonic, mono)"; do
+  "$samples/event_info" --stats "$shared/format_samples/${pair%%:*}" > "$work/stats.txt"
+  row=$(grep '^| /' "$work/stats.txt" | awk -F' [|] ' -v name="${pair#*:}" \
+    '{ line = "| " name " | " $3 " | | " $5 " | " $6 " | " $7 " | " $8 " | " $9; sub(/ [|]$/, "", line); print line " |" }')
+  expect doc/simulator.md "$row" "event_info --stats ${pair%%:*}"
+done
+
+# The hot-pixel filter on each TUM recording (doc/filters.md, its command), at relativeRate 10 and 5: the
+# events removed, as the table writes them ("0", or "N (x %)", two decimals below 0.1 %).
+removedText() {  # removedText KEPT TOTAL
+  local removed=$(($2 - $1))
+  if [ "$removed" = 0 ]; then printf '0'; return; fi
+  printf '%s (%s %%)' "$(thousands "$removed")" \
+    "$(awk -v r=$removed -v t="$2" 'BEGIN { p = 100 * r / t; printf (p < 0.1 ? "%.2f" : "%.1f"), p }')"
+}
+for pair in "Fan_disp8.dat:two fans (9.8 s)" "movingPersons.dat:two people walking (10.1 s):--one-based" \
+            "movingPersonFaraway.dat:a person far away (10.0 s):--one-based" "pendulum_left_30cm_2.tsv.txt:a pendulum (13.7 s)"; do
+  IFS=: read -r file label extra <<< "$pair"
+  line="| $label |"
+  for rate in 10 5; do
+    "$samples/event_player" "$tum/$file" --sensor=DVS128 $extra --filter=hot_pixels --filter-set=relativeRate=$rate \
+      --output="$work/hot" > /dev/null 2> "$work/hot.err"
+    read -r kept total < <(tr '\r' '\n' < "$work/hot.err" | sed -n 's/^hot_pixels kept \([0-9]*\) of \([0-9]*\) events$/\1 \2/p')
+    [ "$rate" = 10 ] && line="$line $(thousands "$total") |"
+    line="$line $(removedText "$kept" "$total") |"
+  done
+  expect doc/filters.md "$line" "event_player $file --sensor=DVS128 $extra --filter=hot_pixels, relativeRate 10 and 5"
 done
 
 # Which TUM files count pixels from 1 (doc/reading_recordings.md).
