@@ -78,7 +78,7 @@ int main(int argc, char** argv)
     }
     catch (const std::exception& e)
     {
-        std::cerr << "event_io_bench: " << e.what() << "\n";
+        std::cerr << "event_io_bench: " << errorText(e) << "\n";
         return 2;
     }
     std::vector<Row> rows;

@@ -325,7 +325,7 @@ int main(int argc, char** argv)
     }
     catch (const std::exception& e)
     {
-        std::cerr << "event_stereo_table: " << e.what() << "\n";
+        std::cerr << "event_stereo_table: " << errorText(e) << "\n";
         return 2;
     }
     try
@@ -427,7 +427,7 @@ int main(int argc, char** argv)
     }
     catch (const std::exception& e)
     {
-        std::cerr << "event_stereo_table: " << e.what() << "\n";
+        std::cerr << "event_stereo_table: " << errorText(e) << "\n";
         return 1;
     }
 }

@@ -128,7 +128,7 @@ int main(int argc, char** argv)
     }
     catch (const std::exception& e)
     {
-        std::cerr << "lifetime_check_bias: " << e.what() << "\n";
+        std::cerr << "lifetime_check_bias: " << errorText(e) << "\n";
         return 1;
     }
 }

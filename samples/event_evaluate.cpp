@@ -778,7 +778,7 @@ int main(int argc, char** argv)
     }
     catch (const std::exception& e)
     {
-        std::cerr << "event_evaluate: " << e.what() << "\n";
+        std::cerr << "event_evaluate: " << errorText(e) << "\n";
         return 1;
     }
 }

@@ -371,7 +371,7 @@ int main(int argc, char** argv)
     }
     catch (const std::exception& e)
     {
-        std::cerr << "event_info: " << e.what() << "\n";
+        std::cerr << "event_info: " << errorText(e) << "\n";
         return 2;
     }
     bool failed = false;

@@ -172,7 +172,7 @@ int main(int argc, char** argv)
     }
     catch (const std::exception& e)
     {
-        std::cerr << "\nevent_lifetime: " << e.what() << "\n";
+        std::cerr << "\nevent_lifetime: " << errorText(e) << "\n";
         return 1;
     }
 }

@@ -190,7 +190,7 @@ int main(int argc, char** argv)
     }
     catch (const std::exception& e)
     {
-        std::cerr << "\nevent_player: " << e.what() << "\n";
+        std::cerr << "\nevent_player: " << errorText(e) << "\n";
         return 1;
     }
 }

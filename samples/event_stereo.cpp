@@ -795,7 +795,7 @@ int main(int argc, char** argv)
     }
     catch (const std::exception& e)
     {
-        std::cerr << "event_stereo: " << e.what() << "\n";
+        std::cerr << "event_stereo: " << errorText(e) << "\n";
         return 1;
     }
 }

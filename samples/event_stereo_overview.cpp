@@ -230,7 +230,7 @@ int main(int argc, char** argv)
     }
     catch (const std::exception& e)
     {
-        std::cerr << "event_stereo_overview: " << e.what() << "\n";
+        std::cerr << "event_stereo_overview: " << errorText(e) << "\n";
         return 1;
     }
 }
