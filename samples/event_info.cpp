@@ -364,11 +364,6 @@ int main(int argc, char** argv)
         if (!(durationMs > 0))
             throw std::runtime_error("--duration-ms must be > 0");
     }
-    catch (const cv::Exception& e)
-    {
-        std::cerr << "event_info: " << e.err << "\n";
-        return 2;
-    }
     catch (const std::exception& e)
     {
         std::cerr << "event_info: " << errorText(e) << "\n";

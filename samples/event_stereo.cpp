@@ -510,11 +510,17 @@ private:
         return false;
     }
 
+    /** How far apart the two cameras' rows are at the image's sides, for a row offset and a roll. */
+    double rowsOffAtSides(double rowOffset, double rollRad) const
+    {
+        return std::abs(rowOffset) + std::abs(std::sin(rollRad)) * 0.5 * size_.width;
+    }
+
     void estimateRows()
     {
         double score = 0;
         const Vec2d a = estimateRowAlignment(events_, size_, minDisparity_, maxDisparity_, &score);
-        const double sides = std::abs(a[0]) + std::abs(std::sin(a[1])) * 0.5 * size_.width;
+        const double sides = rowsOffAtSides(a[0], a[1]);
         char text[200];
         std::snprintf(text, sizeof(text), "offset %+.2f px, roll %+.4f rad: up to %.2f px at the sides (score %.2f, %zu events)",
                       a[0], a[1], sides, score, events_.size());
@@ -524,7 +530,7 @@ private:
         if (designed_)
             rowResult_ += cv::format("; the simulated right camera is misaligned on purpose: offset %+.2f px, roll "
                                      "%+.4f rad, up to %.2f px at the sides", designedOffset_, designedRoll_,
-                                     std::abs(designedOffset_) + std::abs(std::sin(designedRoll_)) * 0.5 * size_.width);
+                                     rowsOffAtSides(designedOffset_, designedRoll_));
         else if (score >= kSampleMinRowScore && sides > 0.5)
             std::cerr << "\nevent_stereo: warning: the right camera's rows are off the left's by " << text
                       << "; check the rectification (matches are searched along the rows)\n";

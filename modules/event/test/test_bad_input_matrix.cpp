@@ -46,10 +46,7 @@ Outcome readAs(const std::string& bytes, int api, const std::string& suffix)
         EventCapture cap;
         cap.open(path, api);
         o.sensor = cap.getSensorSize();
-        cap.set(EVENT_CAP_PROP_BATCH_EVENTS, 257);
-        std::vector<Event> packet;
-        while (cap.read(packet))  // kept packet by packet: what came before an error counts too
-            o.events.insert(o.events.end(), packet.begin(), packet.end());
+        readAllEventsInto(cap, o.events, 257);  // what came before an error counts too
     }
     catch (const cv::Exception& e)
     {

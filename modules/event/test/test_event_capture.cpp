@@ -422,8 +422,8 @@ TEST(Event_Capture_Dat, a_file_cut_off_mid_record_delivers_the_records_before_th
     content += std::string("\x00\x08", 2) + datRecord(1, 1, 1, 1) + datRecord(2, 2, 2, 0).substr(0, 5);
     const std::string path = writeTempFile(content, ".dat");
     EventCapture cap(path);
-    std::vector<Event> delivered, packet;
-    expectErrorMentioning([&]() { while (cap.read(packet)) delivered.insert(delivered.end(), packet.begin(), packet.end()); },
+    std::vector<Event> delivered;
+    expectErrorMentioning([&]() { readAllEventsInto(cap, delivered); },
                           { path, "byte " + std::to_string(header + 8), "truncated: the file ends 5 bytes into" });
     EXPECT_EQ(1u, delivered.size());
     std::remove(path.c_str());

@@ -18,14 +18,22 @@
 
 namespace opencv_test {
 
-/** Every event @p cap delivers, read in batches of @p batch events (batches that need not line up with the
-file's own packets). */
-inline std::vector<cv::event::Event> readAllEvents(cv::event::EventCapture& cap, int batch = 1 << 20)
+/** Every event @p cap delivers appended to @p all, read in batches of @p batch events (batches that need not
+line up with the file's own packets), packet by packet: when read() raises (a file cut off mid-record), @p all
+holds every event delivered before the error. */
+inline void readAllEventsInto(cv::event::EventCapture& cap, std::vector<cv::event::Event>& all, int batch = 1 << 20)
 {
     cap.set(cv::event::EVENT_CAP_PROP_BATCH_EVENTS, batch);
-    std::vector<cv::event::Event> all, packet;
+    std::vector<cv::event::Event> packet;
     while (cap.read(packet))
         all.insert(all.end(), packet.begin(), packet.end());
+}
+
+/** Every event @p cap delivers (see readAllEventsInto()). */
+inline std::vector<cv::event::Event> readAllEvents(cv::event::EventCapture& cap, int batch = 1 << 20)
+{
+    std::vector<cv::event::Event> all;
+    readAllEventsInto(cap, all, batch);
     return all;
 }
 

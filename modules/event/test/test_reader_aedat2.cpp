@@ -119,11 +119,10 @@ TEST(Event_Capture_Aedat2, an_unknown_chip_is_refused_and_a_cut_off_file_deliver
     g += std::string("\x00\x01\x02", 3);
     path = writeTempFile(g, ".aedat");
     EventCapture cap(path);
-    std::vector<Event> delivered, packet;
+    std::vector<Event> delivered;
     try
     {
-        while (cap.read(packet))
-            delivered.insert(delivered.end(), packet.begin(), packet.end());
+        readAllEventsInto(cap, delivered);
         FAIL() << "truncated file read as whole";
     }
     catch (const cv::Exception& e)

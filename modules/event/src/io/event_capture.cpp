@@ -273,10 +273,8 @@ public:
     {
         if (!reader)
             return -1.0;
-        if (chunkStartProgress < 0 || chunkEndProgress < 0 || pendingPos >= pending.size())
-            return reader->progress();
-        return chunkStartProgress +
-               (chunkEndProgress - chunkStartProgress) * (double)pendingPos / (double)pending.size();
+        return progressThroughChunk(chunkStartProgress, chunkEndProgress, pendingPos, pending.size(),
+                                    reader->progress());
     }
 
     // Moves the next decoded chunk through the bounds and time-order checks into `pending`.

@@ -72,11 +72,21 @@ Ptr<EventReader> openAedat4Reader(const String& path, const ReaderOptions& optio
 Ptr<EventReader> openRosBag1Reader(const String& path, const ReaderOptions& options);
 Ptr<EventReader> openRosBag2Reader(const String& path, const ReaderOptions& options);
 Ptr<EventReader> openHdf5Reader(const String& path, const ReaderOptions& options);
+/** A reader's figure (progress, ownShare) measured before and after it decoded a chunk, told at the @p taken
+of the chunk's @p size events handed on so far: a chunk may span much of a small file. @p now when either
+figure is unknown (< 0) or the chunk is used up. */
+inline double progressThroughChunk(double atStart, double atEnd, size_t taken, size_t size, double now)
+{
+    if (atStart < 0 || atEnd < 0 || taken >= size)
+        return now;
+    return atStart + (atEnd - atStart) * (double)taken / (double)size;
+}
+
 /** A ROS2 bag: a folder with metadata.yaml, or an sqlite3 database file. */
 bool isRosBag2(const String& path);
 /** Merges a left and a right stream in time order (left first on ties), setting Event::camera and adding
-@p rightTimeOffset to the right stream's timestamps. Each side is read in chunks: memory stays bounded. */
-/** Merges two readers in time order; @p oneFile: both read the same file, one camera each (see ownShare()). */
+@p rightTimeOffset to the right stream's timestamps. Each side is read in chunks: memory stays bounded.
+@p oneFile: both read the same file, one camera each (their progress adds up, see ownShare()). */
 Ptr<EventReader> openStereoMerge(const Ptr<EventReader>& left, const Ptr<EventReader>& right, int64 rightTimeOffset,
                                  bool oneFile = false);
 

@@ -35,10 +35,12 @@ const size_t kMaxRecordBytes = (size_t)1 << 30;  // a corrupt length must not be
 const char* kDvsEventArray = "dvs_msgs/EventArray";
 const char* kEventPacket = "event_camera_msgs/EventPacket";
 const char* kLegacyEventArray = "event_array_msgs/EventArray";  // EventPacket before its 2023 rename: same layout
-
-bool isEventPacket(const std::string& type) { return type == kEventPacket || type == kLegacyEventArray; }
 const char* kDvsMd5 = "5e8beee5a6c107e504c2e78903c224b8";             // Header, height, width, events
 const char* kDvsForkMd5 = "732c9cc0676a970b9aa2873b0d444ac2";         // Header, events, height, width
+
+bool isEventPacket(const std::string& type) { return type == kEventPacket || type == kLegacyEventArray; }
+/** A connection of one of the message types read as events. */
+bool isEventType(const std::string& type) { return type == kDvsEventArray || isEventPacket(type); }
 
 typedef std::map<std::string, std::string> Fields;
 
@@ -112,7 +114,7 @@ public:
                 if (op(h, pos) == 7)
                 {
                     const Connection c = connection(h, data, pos);
-                    if (c.type == kDvsEventArray || isEventPacket(c.type))
+                    if (isEventType(c.type))
                         eventTopics[c.topic] = true;
                 }
             }
@@ -214,7 +216,7 @@ private:
     {
         const uint32_t id = fieldAs<uint32_t>(h, "conn", in_.path(), at);
         const Connection c = connection(h, data, at);
-        if (topic_.empty() && (c.type == kDvsEventArray || isEventPacket(c.type)))
+        if (topic_.empty() && isEventType(c.type))
             topic_ = c.topic;  // unindexed bag: the first event topic
         connections_[id] = c;
     }

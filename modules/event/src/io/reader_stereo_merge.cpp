@@ -148,9 +148,7 @@ private:
         // One call of next() when the buffer is empty (a live reader may return nothing).
         void poll()
         {
-            if (pos < buffer.size() || done)
-                return;
-            if (error)
+            if (pos < buffer.size() || done || error)
                 return;
             buffer.clear();
             pos = 0;
@@ -171,14 +169,13 @@ private:
         }
         /** The reader's progress told by how far the merge has taken from its chunk: one camera's chunk of a
         one-file recording may reach far into the file (the other camera's events are skipped over). */
-        double progress() const { return taken(before, after, done ? 1.0 : reader->progress()); }
-        double share() const { return taken(shareBefore, shareAfter, reader->ownShare()); }
-        /** A figure measured before and after the chunk, at the share of the chunk taken so far. */
-        double taken(double atStart, double atEnd, double now) const
+        double progress() const
         {
-            if (atStart < 0 || atEnd < 0 || pos >= buffer.size())
-                return now;
-            return atStart + (atEnd - atStart) * (double)pos / (double)buffer.size();
+            return progressThroughChunk(before, after, pos, buffer.size(), done ? 1.0 : reader->progress());
+        }
+        double share() const
+        {
+            return progressThroughChunk(shareBefore, shareAfter, pos, buffer.size(), reader->ownShare());
         }
         bool ready() const { return pos < buffer.size(); }
         const Event& head() const { return buffer[pos]; }
