@@ -621,6 +621,7 @@ int main(int argc, char** argv)
         std::vector<int64> confidences(101, 0);  // the left estimates', bins of 0.01
         int64 events = 0, withDisparity[2] = { 0, 0 }, withLifetime[2] = { 0, 0 }, perCamera[2] = { 0, 0 };
         int64 candidates = 0, estimated = 0, within1 = 0, pictures = 0, windows = 0;
+        int64 leftSignal = 0, leftWithin1 = 0;  // the matching rate: left signal events within 1 px of the truth
         int lastEighth = 0;
         SampleProgress progress;
         double absError = 0, seconds = 0, filterSeconds = 0;
@@ -701,7 +702,11 @@ int main(int argc, char** argv)
                         }
                     }
                     if (e.camera == CAMERA_LEFT && !((int)truth.at<float>((int)i, GT_FLAGS) & GT_FLAG_NOISE))
+                    {
                         truthDisparity.at<float>(e.y, e.x) = g;
+                        leftSignal++;
+                        leftWithin1 += d >= 0 && std::abs(d - g) <= 1;
+                    }
                 }
                 if (csv.is_open())
                 {
@@ -788,6 +793,8 @@ int main(int argc, char** argv)
         if (source.hasTruth())
             text << "| ground truth: density (estimated / non-occluded signal) | " << pct(estimated, candidates) << " % |\n"
                  << "| ground truth: estimates within 1 px | " << pct(within1, estimated) << " % |\n"
+                 << "| ground truth: matching rate (left signal events within 1 px, over all of them) | "
+                 << pct(leftWithin1, leftSignal) << " % |\n"
                  << "| ground truth: mean absolute disparity error | " << (estimated ? absError / (double)estimated : 0) << " px |\n";
         text << "| outputs | " << (opt.csv ? "events.csv, " : "") << pictures << " of " << windows
              << " windows as disparity_NNNNN.png" << (video.isOpened() ? ", disparity.avi" : "")

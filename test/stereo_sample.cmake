@@ -1,7 +1,8 @@
 # ctests `event_stereo_*` and `stereo_overview_*`: runs a stereo sample and checks its summary.md: the
 # dominant disparity against the known value (simulated: f * B / Z of the foreground plane; TUM Fan: 8 px,
 # shared/data/README.md; a list: any of a scene's surfaces) within DISPARITY_TOLERANCE px (default 1); optionally the ground-truth accuracy
-# (MIN_WITHIN1 % of estimates within 1 px, MIN_DENSITY %); optionally that every one of the file's
+# (MIN_WITHIN1 % of estimates within 1 px, MIN_DENSITY %, MIN_MATCHING_RATE % of the left signal events within
+# 1 px); optionally that every one of the file's
 # INPUT_EVENTS events is accounted for (processed, or reported as outside the sensor: OUTSIDE_EVENTS of them,
 # when given); optionally the median
 # confidence of the left estimates (MEDIAN_CONFIDENCE "lo;hi", a recording's documented figure); optionally the
@@ -67,7 +68,8 @@ if(DEFINED INPUT_EVENTS)
   endif()
   message("${processed} events processed, ${outside} outside the sensor: all ${INPUT_EVENTS} accounted for")
 endif()
-foreach(check "within 1 px;MIN_WITHIN1" "density \\(estimated / non-occluded signal\\);MIN_DENSITY")
+foreach(check "estimates within 1 px;MIN_WITHIN1" "density \\(estimated / non-occluded signal\\);MIN_DENSITY"
+              "matching rate;MIN_MATCHING_RATE")
   list(GET check 0 label)
   list(GET check 1 var)
   if(DEFINED ${var})

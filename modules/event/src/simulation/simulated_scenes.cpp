@@ -229,21 +229,25 @@ std::vector<SimulatedPlane> simulatedScene(const String& name, SimulatorSettings
     }
     else if (name == "boxes_pair" || name == "boxes_fast_pair")
     {
-        // Two plain boxes 1 m and 2 m away (20 and 10 px) slid to and fro in front of a plain wall at 5 m, as
-        // recorded by a real DAVIS240 pair (davis240Pair): boxes_pair's right camera fires 1.4 x the events
-        // and stamps them 2 ms late; boxes_fast_pair's boxes move twice as fast and its right camera fires
-        // 1.6 x the events 2.5 ms early.
+        // Two plain boxes about 1 m and 2 m away (19.4-20.6 and 9.7-10.3 px) slid to and fro in front of a plain
+        // wall at 5 m, as recorded by a real DAVIS240 pair (davis240Pair): boxes_pair's right camera fires 1.4 x
+        // the events and stamps them 2 ms late; boxes_fast_pair's boxes move 1.4 times as fast and its right
+        // camera fires 1.6 x the events 2.5 ms early. The boxes' faces turn a little away from the cameras, as a
+        // box held by hand does, so that their disparities fall between whole pixels.
         const bool fast = name == "boxes_fast_pair";
-        const double k = fast ? 2.0 : 1.0;
+        const double k = fast ? 4.0 : 3.0;
         planes.push_back(uniformPlane(Vec3d(0, 0, 5.0), Vec2d(8, 6), 0.22));
         SimulatedPlane nearBox = slidingBox(Vec3d(-0.25, 0.05, 1.0), Vec2d(0.1, 0.12), 0.4, 0.2, 0.35 * k, 0);
+        nearBox.rotation = Vec3d(0, 0.35, 0);
         nearBox.texture = TEXTURE_BLOCKS;  // a print on it
         nearBox.cellSize = 0.03;
         nearBox.contrast = 0.3;
         nearBox.textureSeed = 53;
         planes.push_back(nearBox);
-        planes.push_back(slidingBox(Vec3d(0.45, -0.1, 2.0), Vec2d(0.15, 0.2), 0.345, 0.3, 0.25 * k, 2.0));
-        davis240Pair(s, fast ? 0.76 : 0.8, fast ? -2500 : 2000);
+        SimulatedPlane farBox = slidingBox(Vec3d(0.45, -0.1, 2.0), Vec2d(0.15, 0.2), 0.345, 0.3, 0.25 * k, 2.0);
+        farBox.rotation = Vec3d(0, -0.3, 0);
+        planes.push_back(farBox);
+        davis240Pair(s, fast ? 0.82 : 0.86, fast ? -2500 : 2000);
     }
     else if (name == "walking_pair")
     {

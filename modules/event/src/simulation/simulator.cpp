@@ -313,6 +313,13 @@ private:
         return (1 - wy) * top + wy * bottom;
     }
 
+    // The lens blur's kernel: out to 4 sigma, as GaussianBlur sizes it for float images.
+    Size blurKernel() const
+    {
+        const int k = cvRound(s_.blurSigmaPx * 8 + 1) | 1;
+        return Size(k, k);
+    }
+
     // Ray-casts one camera at time t: log intensity, depth, and the image motion of the visible point.
     void render(int camera, double tUs, Render& out) const
     {
@@ -418,10 +425,10 @@ private:
                 // The flicker's share after the lens: the blurred image against the blurred steady one.
                 Mat flicker(sz, CV_32F, out.flickerLogI.data());
                 exp(logI - flicker, steadyLinear);
-                GaussianBlur(steadyLinear, steadyLinear, Size(), s_.blurSigmaPx, s_.blurSigmaPx, BORDER_REPLICATE);
+                GaussianBlur(steadyLinear, steadyLinear, blurKernel(), s_.blurSigmaPx, s_.blurSigmaPx, BORDER_REPLICATE);
             }
             exp(logI, linear);
-            GaussianBlur(linear, linear, Size(), s_.blurSigmaPx, s_.blurSigmaPx, BORDER_REPLICATE);
+            GaussianBlur(linear, linear, blurKernel(), s_.blurSigmaPx, s_.blurSigmaPx, BORDER_REPLICATE);
             log(linear, logI);
             if (flickering_)
             {
@@ -534,9 +541,11 @@ private:
         // take the ground truth from the render, before or after the crossing, that sees the nearer surface.
         if (s_.blurSigmaPx > 0 && searchBlur)
         {
-            // Through the lens blur a pixel also fires for an edge up to about 2 sigma away: the nearest
-            // surface within that reach caused it. Its truth is taken from there.
-            const int reach = (int)std::ceil(2 * s_.blurSigmaPx);
+            // Through the lens blur a pixel also fires for an edge as far away as the blur reaches: the nearest
+            // surface within that reach caused it. Its truth is taken from there. Even the blur's far tail
+            // fires where a pixel's reference level lies just above the surface behind (after one ON event,
+            // two OFF events of half its threshold bring it back exactly there).
+            const int reach = blurKernel().width / 2;
             double best = std::numeric_limits<double>::infinity();
             int bestIndex = i;
             for (int yy = std::max(0, y - reach); yy <= std::min(sz.height - 1, y + reach); yy++)

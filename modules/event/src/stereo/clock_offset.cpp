@@ -25,6 +25,7 @@ const int kMaxMatcherRuns = 5;
 const double kMaxOffsetUs = 20000;         // the offsets tried: software-synchronised clocks are closer
 const double kConfidenceTolerance = 0.002; // mean confidence an offset may cost before it counts as worse
 const double kMinGain = 0.1;               // below, the slope hardly follows the offset: nothing to go by
+const double kClearGain = 0.5;             // from here on the slope follows the offset as a clock would
 
 double clampOffset(double offsetUs)
 {
@@ -219,6 +220,8 @@ SlopeFit slopeAt(const std::vector<Event>& left, const std::vector<Event>& right
     Ptr<StereoEventMatcher> matcher = StereoEventMatcher::create(size, STEREO_COUPLED);
     matcher->setMinDisparity(minD);
     matcher->setMaxDisparity(maxD);
+    // Each event's own disparity against its own speed: a neighbourhood's mean mixes the speeds of its events.
+    matcher->setAveragingRadius(0);
     Mat disparity, flags, flow, confidence;
     matcher->process(merged, disparity, noArray(), flags, noArray(), flow, confidence);
     const Mat_<Event> ev = getEventMat(merged);
@@ -309,8 +312,9 @@ double estimateClockOffset(InputArray events, Size sensorSize, int minDisparity,
     // How sure: the slope's standard error through the gain of g over every offset tried (a line through
     // them all). Where a surface's disparity follows its speed for another reason (parts of a figure at
     // slightly different depths swinging in turn, surfaces a block cannot tell apart), g hardly follows the
-    // offset: a low gain says so. And an offset that makes the matches less clear-cut than none is no
-    // correction.
+    // offset: a low gain says so. Where it follows only weakly, an offset that makes the matches less
+    // clear-cut than none is no correction; where it follows as a clock would, the events have spoken (a more
+    // sensitive camera's earlier events match a little less clear-cut once aligned, and better).
     double sumO = 0, sumG = 0, sumOO = 0, sumOG = 0;
     for (const SlopeFit& f : fits)
     {
@@ -322,7 +326,7 @@ double estimateClockOffset(InputArray events, Size sensorSize, int minDisparity,
     const double k = (double)fits.size(), spread = sumOO - sumO * sumO / k;
     const double overallGain = spread > 0 ? (sumOG - sumO * sumG / k) / spread : gain;
     if (!(overallGain >= kMinGain) || std::abs(best->offsetUs) >= kMaxOffsetUs ||
-        best->meanConfidence < fits[0].meanConfidence - kConfidenceTolerance)
+        (overallGain < kClearGain && best->meanConfidence < fits[0].meanConfidence - kConfidenceTolerance))
         return 0;
     if (uncertaintyUs)
         *uncertaintyUs = best->standardErrorUs / std::min(overallGain, 1.0);

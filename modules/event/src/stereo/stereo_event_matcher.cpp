@@ -240,6 +240,10 @@ void StereoEventMatcherImpl::processAdmitted(const Event& e, Point r, int64 cold
             maps_[c].deactivate(r.x, r.y, p);
     }
 
+    // The neighbours read each event's own estimate (remember below); the output is averaged.
+    const float ownDisparity = est.disparity;
+    if (ownDisparity >= 0 && averagingRadius_ > 0)
+        est.disparity = averagedDisparity(c, r, e.t, ownDisparity, m.counterpartX);
     if (est.disparity >= 0)
     {
         est.flags |= STEREO_HAS_DISPARITY;
@@ -262,7 +266,7 @@ void StereoEventMatcherImpl::processAdmitted(const Event& e, Point r, int64 cold
     // A noise event's disparity has no plane behind it, and noise finds some candidate: it joins the
     // descriptors (above) but not the neighbours' estimates that the prior, the left-right check and the
     // border's estimates read.
-    remember(c, r, e.t, noiseActive ? 0 : activeFor, est.disparity);
+    remember(c, r, e.t, noiseActive ? 0 : activeFor, ownDisparity);
 }
 
 void StereoEventMatcherImpl::activateUndecided(int c, Point r, int p, int64 t)
@@ -749,6 +753,15 @@ void StereoEventMatcherImpl::setRecencyTime(double us)
     recencyTime_ = (int64)std::llround(us);
 }
 
+void StereoEventMatcherImpl::setAveragingRadius(int px)
+{
+    // The row bands' reach covers PRIOR_RADIUS rows around an event (eventRowReach).
+    if (px < 0 || px > (int)PRIOR_RADIUS)
+        CV_Error_(Error::StsBadArg, ("StereoEventMatcher: averaging radius %d px; must be 0..%d px (0: each event keeps "
+                                     "its own estimate)", px, (int)PRIOR_RADIUS));
+    averagingRadius_ = px;
+}
+
 void StereoEventMatcherImpl::setLookAhead(double us)
 {
     if (!(us >= 0 && us <= 1e6))
@@ -796,7 +809,7 @@ void StereoEventMatcherImpl::write(FileStorage& fs) const
        << "minConfidence" << minConfidence_ << "matchedLifetimeConfidence" << matchedLifetimeConfidence_
        << "lifetimeCopyConfidence" << lifetimeCopyConfidence_ << "maxLifetimeCopies" << maxLifetimeCopies_
        << "priorTolerance" << priorTolerance_ << "recencyWeight" << recencyWeight_ << "recencyTime" << (double)recencyTime_
-       << "lookAhead" << (double)lookAhead_ << "fixedInterval" << (double)fixedInterval_
+       << "averagingRadius" << averagingRadius_ << "lookAhead" << (double)lookAhead_ << "fixedInterval" << (double)fixedInterval_
        << "frameWindow" << (double)frameWindow_ << "maxLifetime" << (double)maxLifetime_ << "activeDistance"
        << activeDistance_ << "noiseActiveTime" << (double)noiseActiveTime_;
     fs << "lifetimeEstimator" << "{";
@@ -838,6 +851,7 @@ void StereoEventMatcherImpl::read(const FileNode& fn)
     setPriorTolerance((int)num("priorTolerance", priorTolerance_));
     setRecencyWeight((int)num("recencyWeight", recencyWeight_));
     setRecencyTime(num("recencyTime", (double)recencyTime_));
+    setAveragingRadius((int)num("averagingRadius", averagingRadius_));
     setLookAhead(num("lookAhead", (double)lookAhead_));
     setFixedInterval(num("fixedInterval", (double)fixedInterval_));
     setFrameWindow(num("frameWindow", (double)frameWindow_));

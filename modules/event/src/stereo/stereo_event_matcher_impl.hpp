@@ -131,6 +131,8 @@ public:
     void setRecencyWeight(int percent) CV_OVERRIDE;
     double getRecencyTime() const CV_OVERRIDE { return (double)recencyTime_; }
     void setRecencyTime(double us) CV_OVERRIDE;
+    int getAveragingRadius() const CV_OVERRIDE { return averagingRadius_; }
+    void setAveragingRadius(int px) CV_OVERRIDE;
     double getLookAhead() const CV_OVERRIDE { return (double)lookAhead_; }
 
     void setLookAhead(double us) CV_OVERRIDE;
@@ -288,6 +290,12 @@ private:
     size_t activeEstimateMedian(int c, Point centre, int radius, int columns, int64 t, MatchScratch& s,
                                 float& median) const;
 
+    // The output disparity of an event of sensor c at r with its own estimate `own`: the mean of `own` and the
+    // estimates active at t within averagingRadius_ pixels and AVERAGING_TOLERANCE of it, sensor c's around r
+    // and, when it was matched (counterpartX >= 0), the other sensor's around its counterpart.
+    float averagedDisparity(int c, Point r, int64 t, float own, int counterpartX) const;
+    static constexpr float AVERAGING_TOLERANCE = 1.5f;
+
     // Median lifetime (and the flow of that event) of the active events of polarity p in the cost window
     // around (x, y) of sensor c. False when none has a lifetime.
     // `copies`: how many times that lifetime was copied between the sensors since a plane fit gave it.
@@ -336,6 +344,7 @@ private:
     int priorTolerance_ = 30;
     int recencyWeight_ = 15;
     int64 recencyTime_ = 10000;
+    int averagingRadius_ = 4;
     int64 lookAhead_ = 10000;
     StereoCalibration calibration_;
     std::vector<int> lut_[2];  // raw pixel -> rectified pixel index (-1: outside); empty: no calibration

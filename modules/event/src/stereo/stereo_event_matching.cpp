@@ -460,6 +460,32 @@ size_t StereoEventMatcherImpl::activeEstimateMedian(int c, Point centre, int rad
     return disparities.size();
 }
 
+float StereoEventMatcherImpl::averagedDisparity(int c, Point r, int64 t, float own, int counterpartX) const
+{
+    double sum = own;
+    int n = 1;
+    const int radius = averagingRadius_;
+    // This sensor's estimates around the event, then the other's around its counterpart (same rows: rectified).
+    for (int side = 0; side < (counterpartX >= 0 ? 2 : 1); side++)
+    {
+        const int sensor = side == 0 ? c : 1 - c;
+        const int centreX = side == 0 ? r.x : counterpartX;
+        const int x0 = std::max(0, centreX - radius), x1 = std::min(size_.width - 1, centreX + radius);
+        for (int y = std::max(0, r.y - radius); y <= std::min(size_.height - 1, r.y + radius); y++)
+        {
+            const int64* until = &estimateUntil_[sensor][(size_t)y * size_.width];
+            const float* disparity = &estimateDisparity_[sensor][(size_t)y * size_.width];
+            for (int x = x0; x <= x1; x++)
+                if (t < until[x] && std::abs(disparity[x] - own) <= AVERAGING_TOLERANCE)
+                {
+                    sum += disparity[x];
+                    n++;
+                }
+        }
+    }
+    return (float)(sum / n);
+}
+
 Rect StereoEventMatcherImpl::lifetimeWindowAround(int x, int y) const
 {
     const int h = lifetimeWindow_ / 2;

@@ -94,7 +94,9 @@ struct CV_EXPORTS SimulatorSettings
     /** Temporal threshold noise: each crossing's threshold is the pixel's plus a normal draw of this standard
     deviation (absolute, log intensity), so a pixel does not fire the same way on every edge. */
     double thresholdNoise = 0;
-    /** Lens blur: a Gaussian of this standard deviation [px] on the image before the sensor (0: sharp). */
+    /** Lens blur: a Gaussian of this standard deviation [px] on the image before the sensor, out to 4 standard
+    deviations (0: sharp). An event's ground truth is that of the nearest surface within the blur's reach: an
+    edge between two surfaces is the nearer one's contour. */
     double blurSigmaPx = 0;
     /** Readout latency: every event is stamped this long after its threshold crossing, plus a per-pixel
     offset drawn once from a normal distribution of standard deviation latencySigmaUs (clipped at 0) [us]. */
@@ -157,9 +159,10 @@ Named scenes (create()):
 - "boxes", "boxes_fast", "walking", "walking_near", "low_contrast": the realistic scenes (sparse edges on a
   plain wall, a walking figure 3 m and 1.5 m away, faint texture) with a real DAVIS's noise, latency and
   imperfect rectification;
-- "boxes_pair", "boxes_fast_pair", "walking_pair": boxes slid to and fro and the walking figure as a real
-  DAVIS240 pair records them: thicker, dotted edges, more OFF than ON events, sensors of different
-  sensitivity and latency, and the right camera's clock a few milliseconds off;
+- "boxes_pair", "boxes_fast_pair", "walking_pair": boxes slid to and fro (their faces turned a little, so that
+  their disparities fall between whole pixels) and the walking figure as a real DAVIS240 pair records them:
+  thicker, dotted edges, more OFF than ON events, sensors of different sensitivity and latency, and the right
+  camera's clock a few milliseconds off;
 - "boxes_flicker": "boxes" lit by a lamp flickering at 100 Hz, the lamp itself in view (events flagged
   GT_FLAG_FLICKER).
 */

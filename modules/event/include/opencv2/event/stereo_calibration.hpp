@@ -108,7 +108,7 @@ Two cameras whose clocks disagree by tau (a software synchronisation, different 
 that moves along the rows at u px/s where it was tau earlier or later: matched at the same timestamp, its
 disparity comes out u tau too large. An edge's speed along the row is u = |f|^2 / f_x for its normal flow f,
 so an offset shows as disparities that grow with u on one surface. The events are matched (StereoEventMatcher,
-STEREO_COUPLED, defaults); for each camera, 8 x 8 px block and ten seconds, the confident estimates are cut
+STEREO_COUPLED, defaults, each event's own estimate: no averaging); for each camera, 8 x 8 px block and ten seconds, the confident estimates are cut
 into surfaces where their disparities are more than a pixel apart, and the disparity is regressed on u within
 them (u taken as the median of the block's estimates over 50 ms, as one plane fit's flow is too noisy; a
 second regressor, f_y / f_x, takes up a residual row offset, which moves oblique edges along the row). The
@@ -120,8 +120,9 @@ that speed up, slow down or turn, edges of several directions on an object movin
 rotation. Where one object moves at one speed along the rows, an offset shifts every disparity by one amount,
 exactly as a different depth would, and nothing in the events tells them apart: @p uncertaintyUs is then large
 and the offset should not be applied. The estimate is refused (0, infinite uncertainty) where the slope hardly
-follows the restamping, where it would lie at the +-20 ms end, and where the matches at the estimate are less
-clear-cut (mean confidence) than with the clocks as given.
+follows the restamping, where it would lie at the +-20 ms end, and where it follows only weakly (less than
+half as much as a clock would) and the matches at the estimate are less clear-cut (mean confidence) than with
+the clocks as given.
 @param events stereo events (camera column), time-ordered and rectified, any form getEventMat() accepts; a few
 seconds of a recording with motion is enough (the events are matched up to five times).
 @param sensorSize the sensor size.

@@ -103,6 +103,15 @@ confident trades density for precision (event_evaluate draws that curve). With s
 estimates whose confidence is below t are rejected: the event is flagged STEREO_AMBIGUOUS and gets no
 disparity rather than a likely wrong one, but its confidence is still output.
 
+**Averaging** (COUPLED, DECOUPLED, FIXED_INTERVAL). A match picks a whole-pixel candidate and refines it from
+one window's costs, so the events of one surface scatter over a pixel or two around its disparity; their mean
+lies closer to it. The disparity an event outputs is the mean of its own estimate and the still active
+estimates within getAveragingRadius() pixels of it (this sensor's) and of its counterpart (the other
+sensor's, matched the other way) whose disparity is within 1.5 px of its own: another surface, further apart
+in depth, is left out, so depth edges stay sharp. What the neighbours read (the
+temporal prior, the left-right check, the averaging itself, renderDisparity()) is each event's own estimate,
+so the averaging never feeds on its own output.
+
 **Temporal prior.** An edge crosses the sensor a pixel at a time, so what its events were matched to a
 moment ago, nearby, is most often what the next one should be matched to. When the aggregation ends
 without a unique winner (repeated or row-parallel structure), the median disparity of this sensor's still
@@ -283,6 +292,10 @@ public:
     10000; 1..1e6). */
     CV_WRAP virtual double getRecencyTime() const = 0;
     CV_WRAP virtual void setRecencyTime(double us) = 0;
+    /** @brief Averaging: the radius [px] of the neighbourhood whose estimates an event's output disparity is
+    averaged with (default 3; 0..5; 0: no averaging, the method as published). See the class description. */
+    CV_WRAP virtual int getAveragingRadius() const = 0;
+    CV_WRAP virtual void setAveragingRadius(int px) = 0;
     /** @brief Look-ahead L [us] (COUPLED, DECOUPLED, FIXED_INTERVAL; default 10000; 0..1e6). process() puts
     each event into its sensor's map when it arrives, but matches it (and gives it its lifetime) only once an
     event more than L later has arrived, or at the end of the packet: a counterpart that fires up to L later
