@@ -58,9 +58,9 @@ void realSensor(SimulatorSettings& s)
 
 // Two DAVIS240s of a real stereo rig (measured against recordings of such pairs): on top of realSensor(), OFF
 // events fire more readily than ON ones, thresholds vary more from pixel to pixel and from one crossing to
-// the next (dotted edges with holes), the optics blur edges to 2-4 px, the right sensor fires
-// 1 / rightScale times as many events as the left, and it stamps them rightClockUs later (its clock, and its
-// OFF circuit, which is slower than its ON one).
+// the next (dotted edges with holes), the optics blur edges to 2-4 px, the right sensor's thresholds are
+// rightScale times the left's (below 1: it fires more events), and it stamps them rightClockUs later (its
+// clock, and its OFF circuit, which is slower than its ON one).
 void davis240Pair(SimulatorSettings& s, double rightScale, double rightClockUs)
 {
     realSensor(s);
@@ -229,9 +229,9 @@ std::vector<SimulatedPlane> simulatedScene(const String& name, SimulatorSettings
     }
     else if (name == "boxes_pair" || name == "boxes_fast_pair")
     {
-        // Two plain boxes about 1 m and 2 m away (19.4-20.6 and 9.7-10.3 px) slid to and fro in front of a plain
+        // Two plain boxes about 1 m and 2 m away (19.3-20.7 and 9.8-10.2 px) slid to and fro in front of a plain
         // wall at 5 m, as recorded by a real DAVIS240 pair (davis240Pair): boxes_pair's right camera fires 1.4 x
-        // the events and stamps them 2 ms late; boxes_fast_pair's boxes move 1.4 times as fast and its right
+        // the events and stamps them 2 ms late; boxes_fast_pair's boxes move a third faster and its right
         // camera fires 1.6 x the events 2.5 ms early. The boxes' faces turn a little away from the cameras, as a
         // box held by hand does, so that their disparities fall between whole pixels.
         const bool fast = name == "boxes_fast_pair";
