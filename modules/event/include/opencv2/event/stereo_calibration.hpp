@@ -108,8 +108,9 @@ Two cameras whose clocks disagree by tau (a software synchronisation, different 
 that moves along the rows at u px/s where it was tau earlier or later: matched at the same timestamp, its
 disparity comes out u tau too large. An edge's speed along the row is u = |f|^2 / f_x for its normal flow f,
 so an offset shows as disparities that grow with u on one surface. The events are matched (StereoEventMatcher,
-STEREO_COUPLED, defaults, each event's own estimate: no averaging); for each camera, 8 x 8 px block and ten seconds, the confident estimates are cut
-into surfaces where their disparities are more than a pixel apart, and the disparity is regressed on u within
+STEREO_COUPLED, defaults, each event's own estimate: no averaging); for each camera, 8 x 8 px block and ten
+seconds, the confident estimates are cut into surfaces where their disparities are more than a pixel apart,
+and the disparity is regressed on u within
 them (u taken as the median of the block's estimates over 50 ms, as one plane fit's flow is too noisy; a
 second regressor, f_y / f_x, takes up a residual row offset, which moves oblique edges along the row). The
 right camera is restamped by the offset that makes the slope zero (secant steps, within +-20 ms), and the

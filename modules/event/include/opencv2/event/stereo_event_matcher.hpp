@@ -293,7 +293,7 @@ public:
     CV_WRAP virtual double getRecencyTime() const = 0;
     CV_WRAP virtual void setRecencyTime(double us) = 0;
     /** @brief Averaging: the radius [px] of the neighbourhood whose estimates an event's output disparity is
-    averaged with (default 3; 0..5; 0: no averaging, the method as published). See the class description. */
+    averaged with (default 4; 0..5; 0: no averaging, the method as published). See the class description. */
     CV_WRAP virtual int getAveragingRadius() const = 0;
     CV_WRAP virtual void setAveragingRadius(int px) = 0;
     /** @brief Look-ahead L [us] (COUPLED, DECOUPLED, FIXED_INTERVAL; default 10000; 0..1e6). process() puts
