@@ -160,9 +160,9 @@ Named scenes (create()):
   plain wall, a walking figure 3 m and 1.5 m away, faint texture) with a real DAVIS's noise, latency and
   imperfect rectification;
 - "boxes_pair", "boxes_fast_pair", "walking_pair": boxes slid to and fro (their faces turned a little, so that
-  their disparities fall between whole pixels) and the walking figure as a real DAVIS240 pair records them:
-  thicker, dotted edges, more OFF than ON events, sensors of different sensitivity and latency, and the right
-  camera's clock a few milliseconds off;
+  their disparities fall between whole pixels) and the walking figure 1.8 m away in front of a patterned wall,
+  as a real DAVIS240 pair records them: thicker, dotted edges, more OFF than ON events, sensors of different
+  sensitivity and latency, and the right camera's clock a few milliseconds off;
 - "boxes_flicker": "boxes" lit by a lamp flickering at 100 Hz, the lamp itself in view (events flagged
   GT_FLAG_FLICKER).
 */
