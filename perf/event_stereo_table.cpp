@@ -56,7 +56,8 @@ struct Result
 {
     double seconds = 0;
     double lifetimeSeconds = 0;  // the lifetime estimation alone (StereoEventMatcher::setTimeLifetimes)
-    int64 withLifetime = 0, withDisparity = 0, candidates = 0, estimated = 0, within1 = 0;
+    int64 withLifetime = 0, withDisparity = 0;
+    StereoEventScores scores;  // simulated recordings only
     double p50 = 0, p99 = 0;  // latency per event [us] (FRAME_SGBM: per window)
     double addedMiB = 0;      // peak resident memory during the run minus before it
 };
@@ -67,7 +68,7 @@ std::string num(double v, int precision);
 // first one's memory and counts (every repetition's are the same).
 Result fastest(const Result& first, const Result& next)
 {
-    if (next.withLifetime != first.withLifetime || next.withDisparity != first.withDisparity || next.within1 != first.within1)
+    if (next.withLifetime != first.withLifetime || next.withDisparity != first.withDisparity || next.scores.within1 != first.scores.within1)
         throw std::runtime_error("two runs of the same mode gave different estimates: the matcher is not deterministic");
     Result r = first;
     if (next.seconds < first.seconds)
@@ -182,18 +183,9 @@ Result run(const Recording& rec, int mode, const std::string& settings)
             const int f = fl.at<int>(i);
             r.withLifetime += (f & STEREO_HAS_LIFETIME) != 0;
             r.withDisparity += (f & STEREO_HAS_DISPARITY) != 0;
-            if (rec.truth.empty())
-                continue;
-            const Mat& gt = rec.truth[w];
-            if ((int)gt.at<float>(i, GT_FLAGS) & (GT_FLAG_NOISE | GT_FLAG_OCCLUDED))
-                continue;
-            r.candidates++;
-            if (d.at<float>(i) >= 0)
-            {
-                r.estimated++;
-                r.within1 += std::abs(d.at<float>(i) - gt.at<float>(i, GT_DISPARITY)) <= 1;
-            }
         }
+        if (!rec.truth.empty())
+            scoreStereoEvents(ev, d, rec.truth[w], r.scores);
     }
     r.lifetimeSeconds = m->getLifetimeSeconds();
     r.p50 = percentile(latency, 0.5);
@@ -388,7 +380,8 @@ int main(int argc, char** argv)
                       << num(res[mode].addedMiB, 1) << " MiB |\n";
             auto accuracy = [&](const Result& r) {
                 return rec.truth.empty() ? pct(r.withDisparity, rec.events) + " of all"
-                                         : pct(r.estimated, r.candidates) + " / " + pct(r.within1, r.estimated);
+                                         : pct((int64)r.scores.estimated, (int64)r.scores.visibleSignal) + " / "
+                                               + pct((int64)r.scores.within1, (int64)r.scores.estimated);
             };
             table << "| " << rec.name << " | " << rec.events << " | " << d.withLifetime << " | " << num(d.lifetimeSeconds * 1e3, 0)
                   << " / " << num(d.seconds * 1e3, 0) << " ms | " << c.withLifetime << " | " << num(c.lifetimeSeconds * 1e3, 0)

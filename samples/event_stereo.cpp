@@ -620,11 +620,11 @@ int main(int argc, char** argv)
         std::vector<int64> histogram((size_t)(opt.maxDisparity - opt.minDisparity + 1), 0);
         std::vector<int64> confidences(101, 0);  // the left estimates', bins of 0.01
         int64 events = 0, withDisparity[2] = { 0, 0 }, withLifetime[2] = { 0, 0 }, perCamera[2] = { 0, 0 };
-        int64 candidates = 0, estimated = 0, within1 = 0, pictures = 0, windows = 0;
-        int64 leftSignal = 0, leftWithin1 = 0;  // the matching rate: left signal events within 1 px of the truth
+        int64 pictures = 0, windows = 0;
+        StereoEventScores scores;
         int lastEighth = 0;
         SampleProgress progress;
-        double absError = 0, seconds = 0, filterSeconds = 0;
+        double seconds = 0, filterSeconds = 0;
         int64 filtered = 0;
         std::vector<Event> packet;
         Mat keepMask;
@@ -675,7 +675,10 @@ int main(int argc, char** argv)
             matcher->process(packet, disparity, lifetime, flags, depth, noArray(), confidence);
             seconds += (double)(getTickCount() - t0) / getTickFrequency();
             if (source.hasTruth())
+            {
+                scoreStereoEvents(packet, disparity, truth, scores);
                 truthDisparity = Mat::zeros(size, CV_32F);
+            }
             for (size_t i = 0; i < packet.size(); i++)
             {
                 const Event& e = packet[i];
@@ -688,26 +691,8 @@ int main(int argc, char** argv)
                     confidences[(size_t)std::min(100, std::max(0, (int)(confidence.at<float>((int)i) * 100.f)))]++;
                 if (d >= 0)
                     histogram[(size_t)std::min<int>((int)histogram.size() - 1, std::max(0, (int)std::lround(d) - opt.minDisparity))]++;
-                if (source.hasTruth())
-                {
-                    const float g = truth.at<float>((int)i, GT_DISPARITY);
-                    if (((int)truth.at<float>((int)i, GT_FLAGS) & (GT_FLAG_NOISE | GT_FLAG_OCCLUDED)) == 0)
-                    {
-                        candidates++;
-                        if (d >= 0)
-                        {
-                            estimated++;
-                            within1 += std::abs(d - g) <= 1;
-                            absError += std::abs(d - g);
-                        }
-                    }
-                    if (e.camera == CAMERA_LEFT && !((int)truth.at<float>((int)i, GT_FLAGS) & GT_FLAG_NOISE))
-                    {
-                        truthDisparity.at<float>(e.y, e.x) = g;
-                        leftSignal++;
-                        leftWithin1 += d >= 0 && std::abs(d - g) <= 1;
-                    }
-                }
+                if (source.hasTruth() && e.camera == CAMERA_LEFT && !((int)truth.at<float>((int)i, GT_FLAGS) & GT_FLAG_NOISE))
+                    truthDisparity.at<float>(e.y, e.x) = truth.at<float>((int)i, GT_DISPARITY);
                 if (csv.is_open())
                 {
                     std::snprintf(line, sizeof(line), "%lld,%d,%d,%d,%d,%.2f,%.4f,%.0f,%d,%.3f\n", (long long)e.t, e.x, e.y,
@@ -791,11 +776,11 @@ int main(int argc, char** argv)
              << "| confidence of the left estimates (quartiles) | "
              << (opt.mode == "sgbm" ? std::string("none (frames + SGBM give no confidence)") : confidenceQuartiles(confidences)) << " |\n";
         if (source.hasTruth())
-            text << "| ground truth: density (estimated / non-occluded signal) | " << pct(estimated, candidates) << " % |\n"
-                 << "| ground truth: estimates within 1 px | " << pct(within1, estimated) << " % |\n"
+            text << "| ground truth: density (estimated / non-occluded signal) | " << scores.density() << " % |\n"
+                 << "| ground truth: estimates within 1 px | " << scores.precision() << " % |\n"
                  << "| ground truth: matching rate (left signal events within 1 px, over all of them) | "
-                 << pct(leftWithin1, leftSignal) << " % |\n"
-                 << "| ground truth: mean absolute disparity error | " << (estimated ? absError / (double)estimated : 0) << " px |\n";
+                 << scores.matchingRate() << " % |\n"
+                 << "| ground truth: mean absolute disparity error | " << scores.meanAbsError() << " px |\n";
         text << "| outputs | " << (opt.csv ? "events.csv, " : "") << pictures << " of " << windows
              << " windows as disparity_NNNNN.png" << (video.isOpened() ? ", disparity.avi" : "")
              << ", disparity_histogram.png"

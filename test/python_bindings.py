@@ -40,6 +40,15 @@ st = stats.getStatistics()
 assert st.events == 3 and st.durationUs == 1500 and abs(st.onShare - 2 / 3) < 1e-12, (st.events, st.durationUs)
 assert st.isolatedShare == 1.0 and st.eventsPerCrossing == 1.0, (st.isolatedShare, st.eventsPerCrossing)
 
+# scoreStereoEvents: the three (left) events with a true disparity of 4 px, estimated 4.5 (within 1 px), 7 (3 px
+# off) and none; the second event is occluded, so it counts in the matching rate but not in the density.
+packet_truth = np.zeros((3, 6), np.float32)
+packet_truth[:, 0], packet_truth[:, 1], packet_truth[1, 5] = 5.0, 4.0, ev.GT_FLAG_OCCLUDED
+scores = ev.scoreStereoEvents(packet, np.array([[4.5], [7.0], [-1.0]], np.float32), packet_truth, ev.StereoEventScores())
+assert (scores.leftSignal, scores.leftWithin1, scores.visibleSignal, scores.estimated, scores.within1) == (3, 1, 2, 1, 1), \
+    (scores.leftSignal, scores.leftWithin1, scores.visibleSignal, scores.estimated, scores.within1)
+assert abs(scores.absErrorSum - 0.5) < 1e-6, scores.absErrorSum
+
 # EventWriter -> EventCapture through a file.
 path = os.path.join(tempfile.mkdtemp(), "events.aedat4")
 writer = ev.EventWriter(path, (8, 6))

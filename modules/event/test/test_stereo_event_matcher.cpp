@@ -57,40 +57,33 @@ Accuracy simulate(const std::string& scene, int mode, double ms, int borderBand 
     m->setCalibration(StereoCalibration::fromRectified(sim->getSensorSize(), sim->getSettings().focalLength,
                                                        sim->getSettings().baseline));
     Accuracy a;
-    int64 candidates = 0, estimated = 0, within1 = 0;
-    double absError = 0, depthError = 0;
+    StereoEventScores scores;
     std::vector<Event> ev;
-    Mat gt, d, lt, fl, depth, confidence;
+    Mat gt, d, lt, fl, depth, confidence, counted;
     for (double t = 33000; t <= ms * 1000 + 1; t += 33000)  // windows: what FRAME_SGBM needs, the same for all
     {
         sim->generate(t, ev, gt);
         m->process(ev, d, lt, fl, depth, noArray(), confidence);
+        counted.create((int)ev.size(), 1, CV_8U);
         for (int i = 0; i < (int)ev.size(); i++)
         {
-            const int flags = (int)gt.at<float>(i, GT_FLAGS);
-            if (fl.at<int>(i) & STEREO_HAS_LIFETIME)
-                a.lifetimes[ev[(size_t)i].camera]++;
-            if (flags & (GT_FLAG_NOISE | GT_FLAG_OCCLUDED))
-                continue;
             const Event& e = ev[(size_t)i];
-            if (borderBand > 0 && (e.camera == CAMERA_LEFT ? e.x < sim->getSensorSize().width - borderBand : e.x >= borderBand))
-                continue;
-            candidates++;
-            if (d.at<float>(i) < 0)
-                continue;
-            estimated++;
-            const double err = std::abs(d.at<float>(i) - gt.at<float>(i, GT_DISPARITY));
-            within1 += err <= 1;
-            a.estimates.push_back(std::make_pair(confidence.at<float>(i), err <= 1));
-            absError += err;
-            depthError += std::abs(depth.at<float>(i) - gt.at<float>(i, GT_DEPTH)) / gt.at<float>(i, GT_DEPTH);
+            if (fl.at<int>(i) & STEREO_HAS_LIFETIME)
+                a.lifetimes[e.camera]++;
+            counted.at<uchar>(i) = borderBand == 0
+                || (e.camera == CAMERA_LEFT ? e.x >= sim->getSensorSize().width - borderBand : e.x < borderBand);
+            if (counted.at<uchar>(i) && !((int)gt.at<float>(i, GT_FLAGS) & (GT_FLAG_NOISE | GT_FLAG_OCCLUDED))
+                && d.at<float>(i) >= 0)
+                a.estimates.push_back(std::make_pair(confidence.at<float>(i),
+                                                     std::abs(d.at<float>(i) - gt.at<float>(i, GT_DISPARITY)) <= 1));
         }
+        scoreStereoEvents(ev, d, gt, scores, depth, counted);
     }
-    a.candidates = candidates;
-    a.density = 100.0 * (double)estimated / (double)std::max<int64>(1, candidates);
-    a.within1 = 100.0 * (double)within1 / (double)std::max<int64>(1, estimated);
-    a.meanAbsError = absError / (double)std::max<int64>(1, estimated);
-    a.depthError = depthError / (double)std::max<int64>(1, estimated);
+    a.candidates = (int64)scores.visibleSignal;
+    a.density = scores.density();
+    a.within1 = scores.precision();
+    a.meanAbsError = scores.meanAbsError();
+    a.depthError = scores.meanDepthError();
     return a;
 }
 

@@ -18,6 +18,7 @@ struct SceneRun
     std::vector<float> disparity, confidence, truth, lifetime, truthLifetime;
     std::vector<int> flags, truthFlags, camera;
     std::vector<uchar> horizontalEdge;  // the truth's normal flow is more vertical than horizontal
+    StereoEventScores scores, horizontalEdgeScores;  // over all events, and over those on horizontal edges
 };
 
 inline SceneRun runScene(const std::string& scene, double ms, const std::function<void(StereoEventMatcher&)>& configure)
@@ -32,6 +33,7 @@ inline SceneRun runScene(const std::string& scene, double ms, const std::functio
     {
         sim->generate(t, ev, gt);
         m->process(ev, d, lt, fl, noArray(), noArray(), conf);
+        const size_t first = run.horizontalEdge.size();
         for (int i = 0; i < (int)ev.size(); i++)
         {
             run.disparity.push_back(d.at<float>(i));
@@ -44,6 +46,9 @@ inline SceneRun runScene(const std::string& scene, double ms, const std::functio
             run.camera.push_back(ev[(size_t)i].camera);
             run.horizontalEdge.push_back(std::abs(gt.at<float>(i, GT_FLOW_Y)) > std::abs(gt.at<float>(i, GT_FLOW_X)));
         }
+        scoreStereoEvents(ev, d, gt, run.scores);
+        scoreStereoEvents(ev, d, gt, run.horizontalEdgeScores, noArray(),
+                          Mat((int)ev.size(), 1, CV_8U, run.horizontalEdge.data() + first));
     }
     return run;
 }
@@ -74,34 +79,20 @@ inline bool isLeftSignal(const SceneRun& r, size_t i)
 // Event i has a disparity within 1 px of the truth.
 inline bool matchedWithin1(const SceneRun& r, size_t i)
 {
-    return r.disparity[i] > 0 && std::abs(r.disparity[i] - r.truth[i]) <= 1;
+    return r.disparity[i] >= 0 && std::abs(r.disparity[i] - r.truth[i]) <= 1;
 }
 
 // Left signal events within 1 px of the truth, over all left signal events [%]; onlyHorizontalEdges: over
 // those on horizontal edges.
 inline double matchingRate(const SceneRun& r, bool onlyHorizontalEdges = false)
 {
-    int64 all = 0, matched = 0;
-    for (size_t i = 0; i < r.disparity.size(); i++)
-        if (isLeftSignal(r, i) && (!onlyHorizontalEdges || r.horizontalEdge[i]))
-        {
-            all++;
-            matched += matchedWithin1(r, i);
-        }
-    return 100.0 * (double)matched / (double)std::max<int64>(1, all);
+    return (onlyHorizontalEdges ? r.horizontalEdgeScores : r.scores).matchingRate();
 }
 
 // Estimates of non-occluded signal events within 1 px of the truth [%].
 inline double within1(const SceneRun& r)
 {
-    int64 estimated = 0, good = 0;
-    for (size_t i = 0; i < r.disparity.size(); i++)
-        if (!(r.truthFlags[i] & (GT_FLAG_NOISE | GT_FLAG_OCCLUDED)) && r.disparity[i] >= 0)
-        {
-            estimated++;
-            good += std::abs(r.disparity[i] - r.truth[i]) <= 1;
-        }
-    return 100.0 * (double)good / (double)std::max<int64>(1, estimated);
+    return r.scores.precision();
 }
 
 }  // namespace opencv_test

@@ -1,0 +1,102 @@
+// This file is part of OpenCV project.
+// It is subject to the license terms in the LICENSE file found in the top-level directory
+// of this distribution and at http://opencv.org/license.html.
+
+#include "test_precomp.hpp"
+
+namespace opencv_test { namespace {
+
+// One ground-truth row: depth, disparity, flow, lifetime, flags.
+void addTruth(Mat& gt, float depth, float disparity, int flags)
+{
+    Mat row = (Mat_<float>(1, 6) << depth, disparity, 0.f, 0.f, 0.f, (float)flags);
+    gt.push_back(row);
+}
+
+// Eight events whose counts are known by construction: left signal within / beyond 1 px / without an
+// estimate, a left occluded one within 1 px, left noise, right signal within 1 px and beyond, right occluded.
+struct HandMadePacket
+{
+    std::vector<Event> events;
+    Mat disparity, truth, depth;
+    HandMadePacket()
+    {
+        const struct { int camera; float estimate, truth; int flags; float depth; } rows[] = {
+            { CAMERA_LEFT, 10.5f, 10.f, 0, 2.2f },    // within 1 px: |0.5|, depth error 0.2 / 2
+            { CAMERA_LEFT, 13.f, 10.f, 0, 2.f },      // 3 px off
+            { CAMERA_LEFT, -1.f, 10.f, 0, -1.f },     // no estimate
+            { CAMERA_LEFT, 20.f, 20.f, GT_FLAG_OCCLUDED, 1.f },
+            { CAMERA_LEFT, 5.f, 0.f, GT_FLAG_NOISE, 4.f },
+            { CAMERA_RIGHT, 9.f, 10.f, 0, 2.f },      // within 1 px: exactly 1
+            { CAMERA_RIGHT, 7.f, 10.f, 0, 3.f },      // 3 px off, depth error 1 / 2
+            { CAMERA_RIGHT, 4.f, 20.f, GT_FLAG_OCCLUDED, 1.f },
+        };
+        for (const auto& r : rows)
+        {
+            events.push_back(Event((int64)events.size(), 5, 5, 1, r.camera));
+            disparity.push_back(r.estimate);
+            addTruth(truth, r.truth > 0 ? 0.1f * 200.f / r.truth : 0.f, r.truth, r.flags);
+            depth.push_back(r.depth);
+        }
+    }
+};
+
+TEST(Event_StereoEvaluation, counts_a_hand_made_packet_as_constructed)
+{
+    const HandMadePacket p;
+    StereoEventScores s;
+    scoreStereoEvents(p.events, p.disparity, p.truth, s, p.depth);
+    EXPECT_EQ(5, s.visibleSignal);  // rows 0, 1, 2, 5, 6
+    EXPECT_EQ(4, s.estimated);      // rows 0, 1, 5, 6
+    EXPECT_EQ(2, s.within1);        // rows 0, 5
+    EXPECT_NEAR(0.5 + 3 + 1 + 3, s.absErrorSum, 1e-6);
+    EXPECT_EQ(4, s.leftSignal);     // rows 0-3: the occluded one counts
+    EXPECT_EQ(2, s.leftWithin1);    // rows 0, 3
+    EXPECT_EQ(4, s.depthEstimated);
+    EXPECT_NEAR(0.2 / 2 + 0 + 0 + 1.0 / 2, s.depthErrorSum, 1e-5);
+    EXPECT_DOUBLE_EQ(80.0, s.density());
+    EXPECT_DOUBLE_EQ(50.0, s.precision());
+    EXPECT_DOUBLE_EQ(50.0, s.matchingRate());
+    EXPECT_DOUBLE_EQ(7.5 / 4, s.meanAbsError());
+    EXPECT_NEAR(0.6 / 4, s.meanDepthError(), 1e-6);
+}
+
+TEST(Event_StereoEvaluation, adds_packets_and_counts_only_the_masked_events)
+{
+    const HandMadePacket p;
+    StereoEventScores twice;
+    scoreStereoEvents(p.events, p.disparity, p.truth, twice);
+    scoreStereoEvents(p.events, p.disparity, p.truth, twice);
+    EXPECT_EQ(10, twice.visibleSignal);
+    EXPECT_EQ(4, twice.leftWithin1);
+    EXPECT_EQ(0, twice.depthEstimated) << "no depths given";
+
+    Mat rightOnly(8, 1, CV_8U, Scalar(0));
+    rightOnly.rowRange(5, 8).setTo(1);
+    StereoEventScores right;
+    scoreStereoEvents(p.events, p.disparity, p.truth, right, noArray(), rightOnly);
+    EXPECT_EQ(2, right.visibleSignal);
+    EXPECT_EQ(1, right.within1);
+    EXPECT_EQ(0, right.leftSignal);
+    EXPECT_DOUBLE_EQ(0.0, right.matchingRate()) << "no left events: 0, not a division by zero";
+
+    StereoEventScores none;
+    scoreStereoEvents(std::vector<Event>(), Mat(), Mat(), none);
+    EXPECT_EQ(0, none.visibleSignal);
+}
+
+TEST(Event_StereoEvaluation, refuses_outputs_that_do_not_fit_the_packet)
+{
+    const HandMadePacket p;
+    StereoEventScores s;
+    EXPECT_THROW(scoreStereoEvents(p.events, p.disparity.rowRange(0, 7), p.truth, s), cv::Exception);
+    EXPECT_THROW(scoreStereoEvents(p.events, p.disparity, p.truth.rowRange(0, 7), s), cv::Exception);
+    EXPECT_THROW(scoreStereoEvents(p.events, p.disparity, p.truth.colRange(0, 5), s), cv::Exception);
+    Mat disparity64;
+    p.disparity.convertTo(disparity64, CV_64F);
+    EXPECT_THROW(scoreStereoEvents(p.events, disparity64, p.truth, s), cv::Exception);
+    EXPECT_THROW(scoreStereoEvents(p.events, p.disparity, p.truth, s, p.depth.rowRange(0, 3)), cv::Exception);
+    EXPECT_EQ(0, s.visibleSignal) << "nothing counted from a refused packet";
+}
+
+}}  // namespace
