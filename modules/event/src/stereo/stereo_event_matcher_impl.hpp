@@ -284,6 +284,31 @@ private:
     // within one pixel. Without any there is nothing to contradict the match.
     bool consistent(int c, int x, int y, double d, int64 t, MatchScratch& s) const;
 
+    // Calls visit(disparity) for each estimate of sensor c still active at time t in columns [x0, x1] of rows
+    // [y0, y1] (clipped to the image), row by row, left to right, skipping the blocks of columns where none is.
+    template <typename Visit>
+    void forEachActiveEstimate(int c, int x0, int x1, int y0, int y1, int64 t, Visit visit) const
+    {
+        x0 = std::max(0, x0);
+        x1 = std::min(size_.width - 1, x1);
+        const int block0 = x0 / ESTIMATE_BLOCK, block1 = x1 / ESTIMATE_BLOCK;
+        for (int y = std::max(0, y0); y <= std::min(size_.height - 1, y1); y++)
+        {
+            const int64* until = &estimateUntil_[c][(size_t)y * size_.width];
+            const float* disparity = &estimateDisparity_[c][(size_t)y * size_.width];
+            const int64* blockUntil = &estimateBlockUntil_[c][(size_t)y * estimateBlocksPerRow_];
+            for (int b = block0; b <= block1; b++)
+            {
+                if (t >= blockUntil[b])
+                    continue;
+                const int xe = std::min(x1, (b + 1) * (int)ESTIMATE_BLOCK - 1);
+                for (int x = std::max(x0, b * (int)ESTIMATE_BLOCK); x <= xe; x++)
+                    if (t < until[x])
+                        visit(disparity[x]);
+            }
+        }
+    }
+
     // The disparities of sensor c's estimates still active at time t within `radius` rows and `columns`
     // columns of `centre` (into s.disparities), their count and, when there are any, their median: what the
     // left-right check and the temporal prior read.

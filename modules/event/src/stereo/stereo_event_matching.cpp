@@ -435,23 +435,8 @@ size_t StereoEventMatcherImpl::activeEstimateMedian(int c, Point centre, int rad
 {
     std::vector<float>& disparities = s.disparities;
     disparities.clear();
-    const int x0 = std::max(0, centre.x - columns), x1 = std::min(size_.width - 1, centre.x + columns);
-    const int block0 = x0 / ESTIMATE_BLOCK, block1 = x1 / ESTIMATE_BLOCK;
-    for (int y = std::max(0, centre.y - radius); y <= std::min(size_.height - 1, centre.y + radius); y++)
-    {
-        const int64* until = &estimateUntil_[c][(size_t)y * size_.width];
-        const float* disparity = &estimateDisparity_[c][(size_t)y * size_.width];
-        const int64* blockUntil = &estimateBlockUntil_[c][(size_t)y * estimateBlocksPerRow_];
-        for (int b = block0; b <= block1; b++)
-        {
-            if (t >= blockUntil[b])
-                continue;
-            const int xe = std::min(x1, (b + 1) * (int)ESTIMATE_BLOCK - 1);
-            for (int x = std::max(x0, b * (int)ESTIMATE_BLOCK); x <= xe; x++)
-                if (t < until[x])
-                    disparities.push_back(disparity[x]);
-        }
-    }
+    forEachActiveEstimate(c, centre.x - columns, centre.x + columns, centre.y - radius, centre.y + radius, t,
+                          [&disparities](float d) { disparities.push_back(d); });
     if (disparities.empty())
         return 0;
     const size_t mid = disparities.size() / 2;
@@ -468,20 +453,15 @@ float StereoEventMatcherImpl::averagedDisparity(int c, Point r, int64 t, float o
     // This sensor's estimates around the event, then the other's around its counterpart (same rows: rectified).
     for (int side = 0; side < (counterpartX >= 0 ? 2 : 1); side++)
     {
-        const int sensor = side == 0 ? c : 1 - c;
         const int centreX = side == 0 ? r.x : counterpartX;
-        const int x0 = std::max(0, centreX - radius), x1 = std::min(size_.width - 1, centreX + radius);
-        for (int y = std::max(0, r.y - radius); y <= std::min(size_.height - 1, r.y + radius); y++)
-        {
-            const int64* until = &estimateUntil_[sensor][(size_t)y * size_.width];
-            const float* disparity = &estimateDisparity_[sensor][(size_t)y * size_.width];
-            for (int x = x0; x <= x1; x++)
-                if (t < until[x] && std::abs(disparity[x] - own) <= AVERAGING_TOLERANCE)
-                {
-                    sum += disparity[x];
-                    n++;
-                }
-        }
+        forEachActiveEstimate(side == 0 ? c : 1 - c, centreX - radius, centreX + radius, r.y - radius, r.y + radius, t,
+                              [&](float d) {
+                                  if (std::abs(d - own) <= AVERAGING_TOLERANCE)
+                                  {
+                                      sum += d;
+                                      n++;
+                                  }
+                              });
     }
     return (float)(sum / n);
 }
