@@ -780,6 +780,11 @@ int main(int argc, char** argv)
                  << "| ground truth: estimates within 1 px | " << scores.precision() << " % |\n"
                  << "| ground truth: matching rate (left signal events within 1 px, over all of them) | "
                  << scores.matchingRate() << " % |\n"
+                 << "| ground truth: left signal events 1-2 px off / over 2 px off / without a disparity | "
+                 << cv::format("%.1f / %.1f / %.1f", pct((int64)(scores.leftWithin2 - scores.leftWithin1), (int64)scores.leftSignal),
+                               pct((int64)(scores.leftEstimated - scores.leftWithin2), (int64)scores.leftSignal),
+                               pct((int64)(scores.leftSignal - scores.leftEstimated), (int64)scores.leftSignal))
+                 << " % |\n"
                  << "| ground truth: mean absolute disparity error | " << scores.meanAbsError() << " px |\n";
         text << "| outputs | " << (opt.csv ? "events.csv, " : "") << pictures << " of " << windows
              << " windows as disparity_NNNNN.png" << (video.isOpened() ? ", disparity.avi" : "")

@@ -47,6 +47,7 @@ packet_truth[:, 0], packet_truth[:, 1], packet_truth[1, 5] = 5.0, 4.0, ev.GT_FLA
 scores = ev.scoreStereoEvents(packet, np.array([[4.5], [7.0], [-1.0]], np.float32), packet_truth, ev.StereoEventScores())
 assert (scores.leftSignal, scores.leftWithin1, scores.visibleSignal, scores.estimated, scores.within1) == (3, 1, 2, 1, 1), \
     (scores.leftSignal, scores.leftWithin1, scores.visibleSignal, scores.estimated, scores.within1)
+assert (scores.leftEstimated, scores.leftWithin2) == (2, 1), (scores.leftEstimated, scores.leftWithin2)
 assert abs(scores.absErrorSum - 0.5) < 1e-6, scores.absErrorSum
 
 # EventWriter -> EventCapture through a file.

@@ -51,7 +51,9 @@ TEST(Event_StereoEvaluation, counts_a_hand_made_packet_as_constructed)
     EXPECT_EQ(2, s.within1);        // rows 0, 5
     EXPECT_NEAR(0.5 + 3 + 1 + 3, s.absErrorSum, 1e-6);
     EXPECT_EQ(4, s.leftSignal);     // rows 0-3: the occluded one counts
+    EXPECT_EQ(3, s.leftEstimated);  // rows 0, 1, 3
     EXPECT_EQ(2, s.leftWithin1);    // rows 0, 3
+    EXPECT_EQ(2, s.leftWithin2) << "row 1 is 3 px off";
     EXPECT_EQ(4, s.depthEstimated);
     EXPECT_NEAR(0.2 / 2 + 0 + 0 + 1.0 / 2, s.depthErrorSum, 1e-5);
     EXPECT_DOUBLE_EQ(80.0, s.density());

@@ -53,7 +53,9 @@ void scoreStereoEvents(InputArray events, InputArray disparity, InputArray groun
         if (ev(i).camera == CAMERA_LEFT)
         {
             scores.leftSignal++;
+            scores.leftEstimated += estimated;
             scores.leftWithin1 += estimated && error <= 1;
+            scores.leftWithin2 += estimated && error <= 2;
         }
         if (flags & GT_FLAG_OCCLUDED)
             continue;

@@ -23,7 +23,7 @@ struct CV_EXPORTS_W_SIMPLE StereoEventScores
 {
     CV_WRAP StereoEventScores()
         : visibleSignal(0), estimated(0), within1(0), absErrorSum(0), depthErrorSum(0), depthEstimated(0),
-          leftSignal(0), leftWithin1(0) {}
+          leftSignal(0), leftEstimated(0), leftWithin1(0), leftWithin2(0) {}
 
     CV_PROP_RW double visibleSignal;  //!< events of either camera flagged neither GT_FLAG_NOISE nor GT_FLAG_OCCLUDED
     CV_PROP_RW double estimated;      //!< of those, the events with a disparity (>= 0)
@@ -33,7 +33,9 @@ struct CV_EXPORTS_W_SIMPLE StereoEventScores
     CV_PROP_RW double depthErrorSum;
     CV_PROP_RW double depthEstimated; //!< the estimated ones whose depth entered depthErrorSum
     CV_PROP_RW double leftSignal;     //!< left-camera events not flagged GT_FLAG_NOISE (occluded ones included)
-    CV_PROP_RW double leftWithin1;    //!< of those, the events with a disparity within 1 px of the truth
+    CV_PROP_RW double leftEstimated;  //!< of those, the events with a disparity
+    CV_PROP_RW double leftWithin1;    //!< of those, the disparities within 1 px of the truth
+    CV_PROP_RW double leftWithin2;    //!< ... within 2 px of the truth (near misses: leftWithin2 - leftWithin1)
 
     /** Estimated over visible signal events [%] (0 when there are none). */
     double density() const { return visibleSignal > 0 ? 100.0 * estimated / visibleSignal : 0.0; }
