@@ -380,8 +380,7 @@ int main(int argc, char** argv)
                       << num(res[mode].addedMiB, 1) << " MiB |\n";
             auto accuracy = [&](const Result& r) {
                 return rec.truth.empty() ? pct(r.withDisparity, rec.events) + " of all"
-                                         : pct((int64)r.scores.estimated, (int64)r.scores.visibleSignal) + " / "
-                                               + pct((int64)r.scores.within1, (int64)r.scores.estimated);
+                                         : num(r.scores.density(), 1) + " % / " + num(r.scores.precision(), 1) + " %";
             };
             table << "| " << rec.name << " | " << rec.events << " | " << d.withLifetime << " | " << num(d.lifetimeSeconds * 1e3, 0)
                   << " / " << num(d.seconds * 1e3, 0) << " ms | " << c.withLifetime << " | " << num(c.lifetimeSeconds * 1e3, 0)

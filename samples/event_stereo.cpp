@@ -750,7 +750,7 @@ int main(int argc, char** argv)
             std::cerr << "event_stereo: warning: "
                       << outsideEventsWarning(outside, size.width, size.height, source.isText(), opt.oneBased,
                                               source.eventsTouchZero()) << "\n";
-        auto pct = [](int64 a, int64 b) { return b ? 100.0 * (double)a / (double)b : 0.0; };
+        auto pct = [](double a, double b) { return b != 0 ? 100.0 * a / b : 0.0; };
         std::ostringstream text;
         text << "# event_stereo summary\n\n| | |\n|---|---|\n"
              << "| source | " << source.name() << " |\n"
@@ -781,9 +781,9 @@ int main(int argc, char** argv)
                  << "| ground truth: matching rate (left signal events within 1 px, over all of them) | "
                  << scores.matchingRate() << " % |\n"
                  << "| ground truth: left signal events 1-2 px off / over 2 px off / without a disparity | "
-                 << cv::format("%.1f / %.1f / %.1f", pct((int64)(scores.leftWithin2 - scores.leftWithin1), (int64)scores.leftSignal),
-                               pct((int64)(scores.leftEstimated - scores.leftWithin2), (int64)scores.leftSignal),
-                               pct((int64)(scores.leftSignal - scores.leftEstimated), (int64)scores.leftSignal))
+                 << cv::format("%.1f / %.1f / %.1f", pct(scores.leftWithin2 - scores.leftWithin1, scores.leftSignal),
+                               pct(scores.leftEstimated - scores.leftWithin2, scores.leftSignal),
+                               pct(scores.leftSignal - scores.leftEstimated, scores.leftSignal))
                  << " % |\n"
                  << "| ground truth: mean absolute disparity error | " << scores.meanAbsError() << " px |\n";
         text << "| outputs | " << (opt.csv ? "events.csv, " : "") << pictures << " of " << windows

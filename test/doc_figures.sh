@@ -22,15 +22,21 @@ thousands() { printf '%s' "$1" | sed -e ':a' -e 's/\([0-9]\)\([0-9]\{3\}\)\($\|,
 # one decimal, as the docs round
 decimal() { awk -v v="$1" 'BEGIN { printf "%.1f", v }'; }
 
-# expect DOC TEXT WHAT: the doc must quote TEXT (what the command printed, formatted as the docs write it).
-expect() {
-  if grep -qF -- "$2" "$repo/$1"; then
-    echo "ok: $1 quotes \"$2\" ($3)"
-  else
-    echo "FAIL: $1 does not quote \"$2\": $3"
-    failures=$((failures + 1))
+# quoted / notQuoted DOC TEXT WHAT: the verdict of one check.
+quoted() { echo "ok: $1 quotes \"$2\" ($3)"; }
+notQuoted() {
+  echo "FAIL: $1 does not quote \"$2\": $3"
+  failures=$((failures + 1))
+}
+# failIfAny: ends the run with the count of figures that moved, if any did.
+failIfAny() {
+  if [ "$failures" -gt 0 ]; then
+    echo "doc_figures: $failures figures differ from what today's build prints: update the docs (or find what changed)"
+    exit 1
   fi
 }
+# expect DOC TEXT WHAT: the doc must quote TEXT (what the command printed, formatted as the docs write it).
+expect() { if grep -qF -- "$2" "$repo/$1"; then quoted "$@"; else notQuoted "$@"; fi; }
 
 # A summary.md row's value: the text after "| LABEL ... | ".
 row() { grep -m1 -F "| $2" "$1" | sed -e 's/^[^|]*|[^|]*| //' -e 's/ |$//'; }
@@ -44,15 +50,9 @@ stereo() {  # stereo OUTPUT-NAME ARGS...: event_stereo on a recording, its summa
   "$samples/event_stereo" "$@" --no-csv --output="$work/$name" > /dev/null 2> "$work/$name.err"
 }
 
-# expectPlain DOC TEXT WHAT: as expect, with the doc's bold marks ignored.
-expectPlain() {
-  if sed 's/[*][*]//g' "$repo/$1" | grep -F -- "$2" > /dev/null; then  # not -q: sed would die of SIGPIPE (pipefail)
-    echo "ok: $1 quotes \"$2\" ($3)"
-  else
-    echo "FAIL: $1 does not quote \"$2\": $3"
-    failures=$((failures + 1))
-  fi
-}
+# expectPlain DOC TEXT WHAT: as expect, with the doc's bold marks ignored (grep without -q: sed would die of
+# SIGPIPE, and pipefail would count that as no match).
+expectPlain() { if sed 's/[*][*]//g' "$repo/$1" | grep -F -- "$2" > /dev/null; then quoted "$@"; else notQuoted "$@"; fi; }
 
 # The DAVIS240-pair scenes (doc/simulator.md, doc/stereo.md). Their statistics as simulator.md's table gives
 # them: p10 interval to 0.1 ms, median to the ms, the isolated share to the percent, no p90.
@@ -86,7 +86,7 @@ done
 
 if [ ! -d "$tum" ]; then
   # The real recordings' figures need them; the simulated ones above are checked (a failure there is one).
-  [ "$failures" -gt 0 ] && { echo "doc_figures: $failures figures differ from what today's build prints"; exit 1; }
+  failIfAny
   echo "SKIP: $tum not found: the real recordings' figures are not checked"
   exit 0
 fi
@@ -183,8 +183,5 @@ else
   failures=$((failures + 1))
 fi
 
-if [ "$failures" -gt 0 ]; then
-  echo "doc_figures: $failures figures differ from what today's build prints: update the docs (or find what changed)"
-  exit 1
-fi
+failIfAny
 echo "doc_figures: every checked figure is today's"
