@@ -7,6 +7,7 @@
 
 #include "opencv2/event.hpp"
 #include "lifetime/lifetime_estimation_rows.hpp"
+#include "stereo/active_estimate_map.hpp"
 #include "stereo/descriptor_cost.hpp"
 #include "stereo/frame_sgbm_matcher.hpp"
 #include "stereo/row_band_scheduler.hpp"
@@ -59,10 +60,9 @@ struct alignas(64) MatchScratch
     std::vector<std::pair<int, StereoEventEstimate>> decided;  // a row band's estimates, stored after the run
 };
 
-/** StereoEventMatcher's implementation. Its members live in three files by concern:
-stereo_event_matcher.cpp (the per-event pipeline, parameters, rendering), stereo_event_matching.cpp (the
-matching core: candidates, cost, winner, left-right check, matched lifetime) and, for several threads,
-row_band_scheduler.cpp (the order of operations across row bands). */
+/** StereoEventMatcher's implementation. Its members live in one file per concern, named in the sections
+below; the neighbours' estimates are ActiveEstimateMap's, and the order of operations across row bands is
+RowBandScheduler's. */
 class StereoEventMatcherImpl CV_FINAL : public StereoEventMatcher
 {
 public:
@@ -165,7 +165,13 @@ private:
     // What process() stores for event i.
     typedef std::function<void(int, const StereoEventEstimate&)> StoreFn;
 
-    // ---- pipeline (stereo_event_matcher.cpp)
+    // ---- the public face (stereo_event_matcher.cpp)
+    void sizeScratch(MatchScratch& s) const;
+
+    // FRAME_SGBM: the packet as frames of frameWindow_ matched by StereoSGBM (FrameSgbmMatcher).
+    void processFrames(const Mat_<Event>& ev, const StoreFn& store);
+
+    // ---- the per-event decision (event_decision.cpp)
     // processEvent after admit() and the expiries due: the event at rectified pixel r, inside the image.
     // Reads and writes only rows within eventRowReach() of r.y, with its own scratch: see processOperations().
     // laterPending: a later event of the same pixel and polarity has arrived (look-ahead) and keeps the pixel
@@ -173,32 +179,35 @@ private:
     void processAdmitted(const Event& e, Point r, int64 coldStartEnd, bool laterPending, MatchScratch& s,
                          StereoEventEstimate& est);
 
-    void sizeScratch(MatchScratch& s) const;
-    static void checkMode(int mode);
-
-    static int oddWindow(int n, int lo, int hi, const char* what);
-    static int64 duration(double us, const char* what);
-
-    void setDisparityRange(int lo, int hi);
-
     // Checks the event (camera, sensor bounds, time order) and returns its rectified pixel, (-1, -1) when it
     // falls outside the rectified image.
     Point admit(const Event& e);
 
-    void remember(int c, Point r, int64 t, int64 activeFor, float disparity);
     // Makes the event of time t at rectified pixel r active in sensor c's map until its decision sets its
     // activity: it takes part in the descriptors of the events matched meanwhile, its own included.
     void activateUndecided(int c, Point r, int p, int64 t);
-    // The candidates' shares of the recency cost (s.recencyShare) for an event of time t matched against
-    // `other` (see match()), reading its columns `columns` (recencyColumnRange).
-    void recencyShares(const ZouDescriptorMap& other, const Range& columns, int sign, Point r, int p, int64 t,
-                       MatchScratch& s) const;
-    // The other sensor's columns within a pixel of the candidates (s.candidates), inside the image.
-    Range recencyColumnRange(int sign, Point r, const MatchScratch& s) const;
 
     // How long an event with this lifetime (us per pixel) stays active: until its edge has moved
     // activeDistance_ pixels, at most maxLifetime_.
     int64 activeSpan(double lifetime) const;
+
+    // ---- look-ahead and row bands (operation_schedule.cpp)
+    // process() with look-ahead or on several threads (with the results of one: see RowBandScheduler): the
+    // packet's admission, then its operations.
+    void processOperations(const Mat_<Event>& ev, const StoreFn& store);
+
+    // The packet's operations (into operations_: event index x 2 + 1 for a decision, + 0 for an arrival) with
+    // their rows and times, for the first `valid` events of the admission.
+    void scheduleOperations(int valid);
+
+    // ---- parameters (matcher_parameters.cpp)
+    static void checkMode(int mode);
+
+    static int oddWindow(int n, int lo, int hi, const char* what);
+
+    static int64 duration(double us, const char* what);
+
+    void setDisparityRange(int lo, int hi);
 
     // How many rows above and below its own an event's processing reads or writes: the aggregation window's
     // descriptors (match), the matched window (its median lifetime), the left-right check's 3 x 3, the
@@ -219,18 +228,7 @@ private:
     // (the largest write reach + the largest reach of any access; eventRowReach() includes the expiries').
     int bandConflictRows() const { return rowWriteReach() + eventRowReach(); }
 
-    Mat colourLut() const;
-    int colourIndex(float d) const;
-
-    void processFrames(const Mat_<Event>& ev, const StoreFn& store);
-    // process() with look-ahead or on several threads (with the results of one: see RowBandScheduler): the
-    // packet's admission, then its operations.
-    void processOperations(const Mat_<Event>& ev, const StoreFn& store);
-    // The packet's operations (into operations_: event index x 2 + 1 for a decision, + 0 for an arrival) with
-    // their rows and times, for the first `valid` events of the admission.
-    void scheduleOperations(int valid);
-
-    // ---- matching core (stereo_event_matching.cpp)
+    // ---- matching along the row (row_match.cpp)
     // Adds the SAD over the rectangle [x0, x1] x [y0, y1] (relative to the event) to every candidate's cost;
     // returns the same sum against an empty map (the event's side alone).
     unsigned addRect(const ZouDescriptorMap& self, const ZouDescriptorMap& other, Point r, int x0, int x1, int y0, int y1,
@@ -266,6 +264,15 @@ private:
     const unsigned* scoreSeenColumns(const ZouDescriptorMap& self, int sign, Point r, int h, int& columnsAt,
                                      MatchScratch& s) const;
 
+    // The candidates' shares of the recency cost (s.recencyShare) for an event of time t matched against
+    // `other` (see match()), reading its columns `columns` (recencyColumnRange).
+    void recencyShares(const ZouDescriptorMap& other, const Range& columns, int sign, Point r, int p, int64 t,
+                       MatchScratch& s) const;
+
+    // The other sensor's columns within a pixel of the candidates (s.candidates), inside the image.
+    Range recencyColumnRange(int sign, Point r, const MatchScratch& s) const;
+
+    // ---- the neighbours' estimates (neighbour_estimates.cpp)
     // The temporal prior's decision for an event (polarity p) without a unique winner (best cost bestCost, the
     // candidates' scores in score): false when it has none; otherwise the chosen candidate in m.
     // Its neighbourhood: PRIOR_RADIUS rows above and below, and `columns` (priorColumnReach) to each side:
@@ -273,8 +280,10 @@ private:
     enum { PRIOR_RADIUS = 5, PRIOR_ROW_REACH = 30, PRIOR_SUPPORT = 3 };
     bool decideByPrior(int c, Point r, int p, int64 t, int columns, const unsigned* score, unsigned bestCost, MatchScratch& s,
                        MatchResult& m) const;
+
     // How far along the row the temporal prior looks for the event at r of sensor c.
     int priorColumnReach(int c, Point r) const;
+
     // The estimate of an event of sensor c at r whose neighbours' estimates (PRIOR_RADIUS rows, PRIOR_ROW_REACH
     // columns) put its counterpart past the other image's border: false when they do not.
     bool estimateBeyondView(int c, Point r, int64 t, MatchScratch& s, MatchResult& m) const;
@@ -284,47 +293,18 @@ private:
     // within one pixel. Without any there is nothing to contradict the match.
     bool consistent(int c, int x, int y, double d, int64 t, MatchScratch& s) const;
 
-    // Calls visit(disparity) for each estimate of sensor c still active at time t in columns [x0, x1] of rows
-    // [y0, y1] (clipped to the image), row by row, left to right, skipping the blocks of columns where none is.
-    template <typename Visit>
-    void forEachActiveEstimate(int c, int x0, int x1, int y0, int y1, int64 t, Visit visit) const
-    {
-        x0 = std::max(0, x0);
-        x1 = std::min(size_.width - 1, x1);
-        const int block0 = x0 / ESTIMATE_BLOCK, block1 = x1 / ESTIMATE_BLOCK;
-        for (int y = std::max(0, y0); y <= std::min(size_.height - 1, y1); y++)
-        {
-            const int64* until = &estimateUntil_[c][(size_t)y * size_.width];
-            const float* disparity = &estimateDisparity_[c][(size_t)y * size_.width];
-            const int64* blockUntil = &estimateBlockUntil_[c][(size_t)y * estimateBlocksPerRow_];
-            for (int b = block0; b <= block1; b++)
-            {
-                if (t >= blockUntil[b])
-                    continue;
-                const int xe = std::min(x1, (b + 1) * (int)ESTIMATE_BLOCK - 1);
-                for (int x = std::max(x0, b * (int)ESTIMATE_BLOCK); x <= xe; x++)
-                    if (t < until[x])
-                        visit(disparity[x]);
-            }
-        }
-    }
-
-    // The disparities of sensor c's estimates still active at time t within `radius` rows and `columns`
-    // columns of `centre` (into s.disparities), their count and, when there are any, their median: what the
-    // left-right check and the temporal prior read.
-    size_t activeEstimateMedian(int c, Point centre, int radius, int columns, int64 t, MatchScratch& s,
-                                float& median) const;
-
     // The output disparity of an event of sensor c at r with its own estimate `own`: the mean of `own` and the
     // estimates active at t within averagingRadius_ pixels and AVERAGING_TOLERANCE of it, sensor c's around r
     // and, when it was matched (counterpartX >= 0), the other sensor's around its counterpart.
     float averagedDisparity(int c, Point r, int64 t, float own, int counterpartX) const;
     static constexpr float AVERAGING_TOLERANCE = 1.5f;
 
-    // Median lifetime (and the flow of that event) of the active events of polarity p in the cost window
+    // ---- the matched lifetime (matched_lifetime.cpp)
+    // Median lifetime (and the flow of that event) of the active events of polarity p in the lifetime window
     // around (x, y) of sensor c. False when none has a lifetime.
     // `copies`: how many times that lifetime was copied between the sensors since a plane fit gave it.
     bool matchedLifetime(int c, int x, int y, int p, MatchScratch& s, float& lifetime, Vec2f& flow, int& copies) const;
+
     // COUPLED: matchedLifetime of one event's counterpart, taken on the first get() and kept; `copies` is valid
     // after a get() that found one.
     class MatchedWindow CV_FINAL : public MatchedLifetimeSource
@@ -351,12 +331,18 @@ private:
         int state_ = UNKNOWN;
         std::pair<float, Vec2f> matched_;
     };
+
     // COUPLED: starts loading what matchedLifetime(c, x, y, p) will read, so that the left-right check overlaps
     // its cache misses (the other sensor's lifetimes are seldom cached).
     void prefetchMatchedWindow(int c, int x, int y, int p) const;
+
     // The lifetimeWindow around (x, y), clipped to the image: the window matchedLifetime reads.
     Rect lifetimeWindowAround(int x, int y) const;
 
+    // ---- rendering (disparity_rendering.cpp)
+    Mat colourLut() const;
+
+    int colourIndex(float d) const;
     Size size_;
     int mode_ = STEREO_COUPLED;
     int minDisparity_ = 0, maxDisparity_ = 40;
@@ -377,19 +363,7 @@ private:
     Ptr<LifetimeEstimator> estimators_[2];
     ZouDescriptorMap maps_[2];
     FrameSgbmMatcher frames_;
-    // Per pixel of each sensor, the last event's estimate, for the neighbours' estimates (the prior, past the
-    // view, the left-right check) and renderDisparity: the end of its activity (NO_ESTIMATE when it has no
-    // disparity, so that one compare tells an active estimate) and its disparity. Two arrays: the scans read
-    // the ends of a row's estimates, and a disparity only where one is active.
-    std::vector<int64> estimateUntil_[2];
-    std::vector<float> estimateDisparity_[2];
-    static constexpr int64 NO_ESTIMATE = std::numeric_limits<int64>::min();
-    // Per ESTIMATE_BLOCK pixels of a row: at least the latest estimateUntil_ of the block (it only grows), so
-    // that a scan skips the blocks where no estimate can be active.
-    enum { ESTIMATE_BLOCK = 16 };
-    std::vector<int64> estimateBlockUntil_[2];
-    int estimateBlocksPerRow_ = 0;
-    std::vector<int64> lastEventTime_[2];
+    ActiveEstimateMap estimates_[2];  // each event's own estimate, as its neighbours read it
     int64 lastTime_ = std::numeric_limits<int64>::min();
     int64 coldStartEnd_ = 0;  // the end of the cold start: see admit()
     // The cost kernel for this CPU (candidates' costs and window masses), fetched once.

@@ -2,20 +2,18 @@
 // It is subject to the license terms in the LICENSE file found in the top-level directory
 // of this distribution and at http://opencv.org/license.html.
 
-// The matching core of StereoEventMatcher: candidates along the row, descriptor cost with iterative
-// aggregation, the winner and its uniqueness, the left-right check and the matched window's lifetime.
+// Matching one event along its row: the candidates, the descriptor cost with iterative aggregation (costs
+// past the other image's border scored on the seen columns), the recency cost, the winner, its uniqueness and
+// its sub-pixel refinement.
 
 #include "precomp.hpp"
-#include "stereo/stereo_event_matcher_impl.hpp"
 #include "common/prefetch.hpp"
-
+#include "stereo/stereo_event_matcher_impl.hpp"
 
 namespace cv {
 namespace event {
 namespace detail {
 
-// Adds the SAD over the rectangle [x0, x1] x [y0, y1] (relative to the event) to every candidate's cost;
-// returns the same sum against an empty map (the event's side alone).
 unsigned StereoEventMatcherImpl::addRect(const ZouDescriptorMap& self, const ZouDescriptorMap& other, Point r, int x0, int x1, int y0, int y1,
                  MatchScratch& s) const
 {
@@ -27,7 +25,6 @@ unsigned StereoEventMatcherImpl::addRect(const ZouDescriptorMap& self, const Zou
                          s.count, x1 - x0 + 1, y1 - y0 + 1, s.cost.data());
 }
 
-// Sum of the descriptor values over [x0, x1] x [y0, y1] relative to q: the cost of matching against nothing.
 unsigned StereoEventMatcherImpl::rectMass(const ZouDescriptorMap& map, Point q, int x0, int x1, int y0, int y1) const
 {
     // The batch kernel without candidates: it returns the rectangle's mass alone.
@@ -57,16 +54,6 @@ inline unsigned descriptorMass(const uchar* d)
 inline uint64 scaleToWindow(uint64 cost, int width, int seen)
 {
     return seen == width ? cost : (cost * (uint64)width + (uint64)seen / 2) / (uint64)seen;
-}
-
-// The share of the neighbourhood's estimates within a pixel of their median: the confidence of an estimate
-// the neighbours decide (the temporal prior, an event past the other camera's view).
-inline float agreeingShare(const std::vector<float>& disparities, float median)
-{
-    int agree = 0;
-    for (float v : disparities)
-        agree += std::abs(v - median) <= 1.f;
-    return (float)agree / (float)disparities.size();
 }
 
 // The sub-pixel offset of the cost minimum c0 from its neighbours' costs cm (one pixel less) and cp (one
@@ -163,7 +150,6 @@ const unsigned* StereoEventMatcherImpl::scoreSeenColumns(const ZouDescriptorMap&
     return score;
 }
 
-// Matches the event at r (camera c, polarity p, time t) along its row.
 MatchResult StereoEventMatcherImpl::match(int c, Point r, int p, int64 t, MatchScratch& s) const
 {
     MatchResult m;
@@ -344,164 +330,6 @@ void StereoEventMatcherImpl::recencyShares(const ZouDescriptorMap& other, const 
         const uint64 nearest = std::min(gap[x], std::min(gap[std::max(x0, x - 1)], gap[std::min(x1, x + 1)]));
         share[i] = nearest >= (uint64)recencyTime_ ? 1.f : (float)((double)nearest / (double)recencyTime_);
     }
-}
-
-// The temporal prior (see match()): this sensor's still active estimates within PRIOR_RADIUS rows and `columns`
-// columns of r, at least PRIOR_SUPPORT of them. Their median is the prior; the cheapest candidate within a pixel
-// of it wins when its cost is within priorTolerance_ % of the best's, with the share of those estimates that
-// agree with the median within a pixel as its confidence. Edges move across the sensor a pixel at a time: what their events
-// were matched to a moment ago, nearby, is most often what the next one should be matched to.
-bool StereoEventMatcherImpl::decideByPrior(int c, Point r, int p, int64 t, int columns, const unsigned* score, unsigned bestCost, MatchScratch& s,
-                                           MatchResult& m) const
-{
-    float prior;
-    const size_t support = activeEstimateMedian(c, r, PRIOR_RADIUS, columns, t, s, prior);
-    if (support < PRIOR_SUPPORT)
-        return false;
-    const int* const candidates = s.candidates.data();
-    int chosen = -1;
-    for (int i = 0; i < s.count; i++)
-        if (std::abs((float)(minDisparity_ + candidates[i]) - prior) <= 1.f && (chosen < 0 || score[i] < score[chosen]))
-            chosen = i;
-    if (chosen < 0 || (uint64)score[chosen] * 100 > (uint64)bestCost * (uint64)(100 + priorTolerance_))
-        return false;
-    const int d = minDisparity_ + candidates[chosen];
-    m.disparity = (float)d;
-    m.counterpartX = r.x + (c == CAMERA_LEFT ? -d : d);
-    m.confidence = agreeingShare(s.disparities, prior);  // before consistent() below refills s.disparities
-    prefetchMatchedWindow(1 - c, m.counterpartX, r.y, p);
-    if (!consistent(1 - c, m.counterpartX, r.y, d, t, s))
-        m.confidence = 0.f;
-    return true;
-}
-
-// Along a horizontal edge every candidate on the other sensor's copy of the edge costs about the same: only
-// the edge's ends tell them apart, and an event far from both stays ambiguous, as do its neighbours, so that
-// the prior's 11 x 11 neighbourhood holds no estimates or only the ends' wrong ones. On such an edge the prior
-// reads 30 px to each side along the row, the width of the largest cost window at its default, to reach the
-// edge's corners and the vertical edges at its ends. The edge's direction comes from the normal flow of the
-// active events around the event (both polarities): mostly vertical flow is a horizontal edge. Its rows stay
-// PRIOR_RADIUS, so that the row bands' reach is unchanged.
-int StereoEventMatcherImpl::priorColumnReach(int c, Point r) const
-{
-    const ZouDescriptorMap& map = maps_[c];
-    float across = 0, along = 0;  // |flow x|, |flow y| summed
-    for (int p = 0; p < 2; p++)
-        for (int y = std::max(0, r.y - 1); y <= std::min(size_.height - 1, r.y + 1); y++)
-            for (int x = std::max(0, r.x - 1); x <= std::min(size_.width - 1, r.x + 1); x++)
-                if (map.isActive(x, y, p))
-                {
-                    const Vec2f f = map.flow(x, y, p);
-                    across += std::abs(f[0]);
-                    along += std::abs(f[1]);
-                }
-    return along > across ? (int)PRIOR_ROW_REACH : (int)PRIOR_RADIUS;
-}
-
-// A near object's first columns in the left image (its last ones in the right image) lie past the other
-// camera's view: no counterpart exists, and a candidate found there is another scene point. The estimates
-// around the event tell where it lies: when their median puts the counterpart past the border, it is the
-// event's disparity. It reads as far along the row as the prior on a horizontal edge, to reach the part of
-// the object both cameras see; its estimate counts for the next events nearer the border.
-bool StereoEventMatcherImpl::estimateBeyondView(int c, Point r, int64 t, MatchScratch& s, MatchResult& m) const
-{
-    // The estimates run up to maxDisparity_ + 0.5 (sub-pixel): further from the border, every one lies inside.
-    const int fromBorder = c == CAMERA_LEFT ? r.x : size_.width - 1 - r.x;
-    if (fromBorder > maxDisparity_)
-        return false;
-    float prior;
-    const size_t support = activeEstimateMedian(c, r, PRIOR_RADIUS, PRIOR_ROW_REACH, t, s, prior);
-    if (support < PRIOR_SUPPORT || cvRound(prior) <= fromBorder)
-        return false;
-    m.disparity = prior;
-    m.confidence = agreeingShare(s.disparities, prior);
-    m.flags = STEREO_BEYOND_VIEW;
-    return true;
-}
-
-// Left-right check against the other sensor's own estimates: the active events around the counterpart
-// were matched the other way (toward this sensor); when they have disparities, their median must agree
-// within one pixel. Without any there is nothing to contradict the match.
-bool StereoEventMatcherImpl::consistent(int c, int x, int y, double d, int64 t, MatchScratch& s) const
-{
-    float median;
-    return activeEstimateMedian(c, Point(x, y), 1, 1, t, s, median) == 0 || std::abs(median - d) <= 1.0;
-}
-
-// The disparities of sensor c's estimates still active at time t within `radius` rows and `columns` columns of
-// `centre` (into s.disparities, in no particular order), their count and, when there are any, their median.
-size_t StereoEventMatcherImpl::activeEstimateMedian(int c, Point centre, int radius, int columns, int64 t,
-                                                    MatchScratch& s, float& median) const
-{
-    std::vector<float>& disparities = s.disparities;
-    disparities.clear();
-    forEachActiveEstimate(c, centre.x - columns, centre.x + columns, centre.y - radius, centre.y + radius, t,
-                          [&disparities](float d) { disparities.push_back(d); });
-    if (disparities.empty())
-        return 0;
-    const size_t mid = disparities.size() / 2;
-    std::nth_element(disparities.begin(), disparities.begin() + (std::ptrdiff_t)mid, disparities.end());
-    median = disparities[mid];
-    return disparities.size();
-}
-
-float StereoEventMatcherImpl::averagedDisparity(int c, Point r, int64 t, float own, int counterpartX) const
-{
-    double sum = own;
-    int n = 1;
-    const int radius = averagingRadius_;
-    // This sensor's estimates around the event, then the other's around its counterpart (same rows: rectified).
-    for (int side = 0; side < (counterpartX >= 0 ? 2 : 1); side++)
-    {
-        const int centreX = side == 0 ? r.x : counterpartX;
-        forEachActiveEstimate(side == 0 ? c : 1 - c, centreX - radius, centreX + radius, r.y - radius, r.y + radius, t,
-                              [&](float d) {
-                                  if (std::abs(d - own) <= AVERAGING_TOLERANCE)
-                                  {
-                                      sum += d;
-                                      n++;
-                                  }
-                              });
-    }
-    return (float)(sum / n);
-}
-
-Rect StereoEventMatcherImpl::lifetimeWindowAround(int x, int y) const
-{
-    const int h = lifetimeWindow_ / 2;
-    return Rect(Point(x - h, y - h), Point(x + h + 1, y + h + 1)) & Rect(Point(), size_);
-}
-
-void StereoEventMatcherImpl::prefetchMatchedWindow(int c, int x, int y, int p) const
-{
-    if (mode_ != STEREO_COUPLED)
-        return;
-    const Rect w = lifetimeWindowAround(x, y);
-    maps_[c].prefetchLifetimes(w.x, w.x + w.width - 1, w.y, w.y + w.height - 1, p);
-}
-
-// Median lifetime (and the flow of that event) of the active events of polarity p in the lifetime window
-// around (x, y) of sensor c. False when none has a lifetime.
-// Matched events copy their lifetime, so most windows hold equal lifetimes: the median is taken in the order
-// (lifetime, position in the map), which fixes whose flow is returned whatever the selection algorithm
-// (WindowMedianKernels: the events are gathered in map order).
-bool StereoEventMatcherImpl::matchedLifetime(int c, int x, int y, int p, MatchScratch& s, float& lifetime, Vec2f& flow,
-                                             int& copies) const
-{
-    const ZouDescriptorMap& map = maps_[c];
-    const Rect w = lifetimeWindowAround(x, y);
-    int* const values = s.matchedValues.data();
-    int* const positions = s.matchedPositions.data();
-    const int n = windowMedian_.gather(map.lifetimes(), map.lifetimeIndex(w.x, w.y, p), map.lifetimeRowStep(), w.width,
-                                       w.height, values, positions);
-    if (n == 0)
-        return false;
-    std::fill_n(values + n, (int)WINDOW_MEDIAN_PAD, WINDOW_MEDIAN_PAD_VALUE);
-    const int median = windowMedian_.medianPosition(values, n, s.matchedKeys.data());
-    std::memcpy(&lifetime, &values[median], sizeof(lifetime));
-    flow = map.flowAt(positions[median]);
-    copies = map.copiesAt(positions[median]);
-    return true;
 }
 
 }  // namespace detail

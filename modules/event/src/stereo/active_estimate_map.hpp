@@ -1,0 +1,83 @@
+// This file is part of OpenCV project.
+// It is subject to the license terms in the LICENSE file found in the top-level directory
+// of this distribution and at http://opencv.org/license.html.
+
+#ifndef OPENCV_EVENT_SRC_STEREO_ACTIVE_ESTIMATE_MAP_HPP
+#define OPENCV_EVENT_SRC_STEREO_ACTIVE_ESTIMATE_MAP_HPP
+
+#include "opencv2/core.hpp"
+
+#include <algorithm>
+#include <limits>
+#include <vector>
+
+namespace cv {
+namespace event {
+namespace detail {
+
+/** One sensor's per-event disparity estimates as the neighbours read them (the temporal prior, the estimates
+past the other sensor's view, the left-right check, the averaging) and as renderDisparity() shows them: per
+pixel, the last event's time, its own estimate and the end of that estimate's activity.
+
+The ends and the disparities are two arrays: the scans read a row's ends, and a disparity only where one is
+active. Per ESTIMATE_BLOCK pixels of a row the latest end in the block (it only grows) lets a scan skip the
+blocks where no estimate can be active. Row bands on several threads each write their own rows. */
+class ActiveEstimateMap
+{
+public:
+    // Forgets every estimate and sizes the map for a sensor of `size`.
+    void reset(Size size);
+
+    // The event at r of time t: its estimate `disparity` stays active until activeFor after t; a negative
+    // disparity (no estimate) ends the pixel's estimate at once.
+    void remember(Point r, int64 t, int64 activeFor, float disparity);
+
+    // Calls visit(disparity) for each estimate still active at time t in columns [x0, x1] of rows [y0, y1]
+    // (clipped to the image), row by row, left to right.
+    template <typename Visit>
+    void forEachActive(int x0, int x1, int y0, int y1, int64 t, Visit visit) const
+    {
+        x0 = std::max(0, x0);
+        x1 = std::min(size_.width - 1, x1);
+        const int block0 = x0 / ESTIMATE_BLOCK, block1 = x1 / ESTIMATE_BLOCK;
+        for (int y = std::max(0, y0); y <= std::min(size_.height - 1, y1); y++)
+        {
+            const int64* until = &until_[(size_t)y * size_.width];
+            const float* disparity = &disparity_[(size_t)y * size_.width];
+            const int64* blockUntil = &blockUntil_[(size_t)y * blocksPerRow_];
+            for (int b = block0; b <= block1; b++)
+            {
+                if (t >= blockUntil[b])
+                    continue;
+                const int xe = std::min(x1, (b + 1) * (int)ESTIMATE_BLOCK - 1);
+                for (int x = std::max(x0, b * (int)ESTIMATE_BLOCK); x <= xe; x++)
+                    if (t < until[x])
+                        visit(disparity[x]);
+            }
+        }
+    }
+
+    // The disparities of the estimates active at time t within `rows` rows and `columns` columns of `centre`
+    // (into `disparities`, in no particular order), their count and, when there are any, their median.
+    size_t median(Point centre, int rows, int columns, int64 t, std::vector<float>& disparities, float& median) const;
+
+    // The estimate shown at time t at pixel (x, y): that of the pixel's last event at or before t, while active.
+    bool shownAt(int x, int y, double t, float& disparity) const;
+
+private:
+    enum { ESTIMATE_BLOCK = 16 };
+    static constexpr int64 NO_ESTIMATE = std::numeric_limits<int64>::min();
+
+    Size size_;
+    std::vector<int64> until_;  // NO_ESTIMATE where the last event has none, so that one compare tells an active one
+    std::vector<float> disparity_;
+    std::vector<int64> blockUntil_;
+    int blocksPerRow_ = 0;
+    std::vector<int64> lastEventTime_;
+};
+
+}  // namespace detail
+}  // namespace event
+}  // namespace cv
+
+#endif  // OPENCV_EVENT_SRC_STEREO_ACTIVE_ESTIMATE_MAP_HPP

@@ -1,0 +1,210 @@
+// This file is part of OpenCV project.
+// It is subject to the license terms in the LICENSE file found in the top-level directory
+// of this distribution and at http://opencv.org/license.html.
+
+// StereoEventMatcher's per-event decision: admission (camera, bounds, time order, rectification), the match,
+// then the event's lifetime (COUPLED's policy for a matched event in one place), its activity in the
+// descriptor map and the estimate its neighbours read.
+
+#include "precomp.hpp"
+#include "common/timestamp_math.hpp"
+#include "stereo/stereo_event_matcher_impl.hpp"
+
+namespace cv {
+namespace event {
+namespace detail {
+
+namespace {
+
+// Adds the time from its construction to its destruction to `ticks` when `on` (setTimeLifetimes).
+class LifetimeTimer
+{
+public:
+    LifetimeTimer(bool on, int64& ticks) : ticks_(on ? &ticks : nullptr), start_(on ? getTickCount() : 0) {}
+    ~LifetimeTimer()
+    {
+        if (ticks_)
+            *ticks_ += getTickCount() - start_;
+    }
+private:
+    int64* ticks_;
+    int64 start_;
+};
+
+}  // namespace
+
+void StereoEventMatcherImpl::processAdmitted(const Event& e, Point r, int64 coldStartEnd, bool laterPending, MatchScratch& s,
+                                             StereoEventEstimate& est)
+{
+    const int c = e.camera, p = e.p ? 1 : 0;
+    Event re = e;
+    re.x = (short)r.x;
+    re.y = (short)r.y;
+    LifetimeEstimator& estimator = *estimators_[c];
+
+    int status = -1;
+    int lifetimeCopies = 0;  // of the lifetime this event ends with (0 unless it was passed on by a match)
+    if (mode_ == STEREO_DECOUPLED)
+    {
+        const LifetimeTimer timer(timeLifetimes_, s.lifetimeTicks);
+        est.lifetime = processEventInRows(estimator, re, est.flow, status, s.lifetimes[c]);
+    }
+    // The event takes part in its own descriptor while it is matched; its final activity follows below.
+    activateUndecided(c, r, p, e.t);
+    // Where the neighbours put the event's counterpart past the other sensor's border, there is nothing to
+    // match: their estimates decide (no counterpart, so no matched window for the lifetime either).
+    MatchResult m;
+    if (!estimateBeyondView(c, r, e.t, s, m))
+        m = match(c, r, p, e.t, s);
+    est.flags |= m.flags;
+    est.confidence = m.confidence;
+    if (m.disparity >= 0)
+    {
+        if (m.confidence >= minConfidence_)
+            est.disparity = m.disparity;
+        else
+            est.flags |= STEREO_AMBIGUOUS;
+    }
+    if (mode_ == STEREO_COUPLED)
+    {
+        const LifetimeTimer timer(timeLifetimes_, s.lifetimeTicks);
+        // The other sensor's matched window, whose median is taken only where it is used.
+        MatchedWindow window(*this, 1 - c, m.counterpartX, r.y, p, s);
+        const bool matchable = est.disparity >= 0 && m.counterpartX >= 0;
+        // A lifetime copied back and forth between the sensors is never refitted while the edge changes speed (a
+        // swinging limb): past maxLifetimeCopies copies the event fits its own plane first, as it does after a
+        // match less confident than lifetimeCopyConfidence_ (most often a wrong one).
+        std::pair<float, Vec2f> matched;
+        if (matchable && !(m.confidence < lifetimeCopyConfidence_) && window.get(matched)
+            && window.copies < maxLifetimeCopies_)
+        {
+            lifetimeCopies = window.copies + 1;
+            if (m.confidence >= matchedLifetimeConfidence_)
+            {
+                est.lifetime = matched.first;
+                est.flow = matched.second;
+                insertEventInRows(estimator, re, est.lifetime, est.flow, s.lifetimes[c]);
+                status = LIFETIME_MATCHED;
+            }
+            else
+            {
+                // Every event keeps its best disparity, noise included, and noise finds some candidate: below
+                // matchedLifetimeConfidence_ the event's own plane says whether it is noise before it takes the
+                // match's lifetime.
+                est.lifetime = processMatchedEventInRows(estimator, re, matched, est.flow, status, s.lifetimes[c]);
+            }
+        }
+        else if (matchable && m.confidence >= matchedLifetimeConfidence_)
+        {
+            // The event's own plane first; only where it finds none the matched window's median (taken here if
+            // not above; an empty window leaves the event noise, as processEventInRows would).
+            est.lifetime = refitMatchedEventInRows(estimator, re, window, est.flow, status, s.lifetimes[c]);
+            lifetimeCopies = window.copies + 1;
+        }
+        else
+            est.lifetime = processEventInRows(estimator, re, est.flow, status, s.lifetimes[c]);
+    }
+
+    int64 activeFor = 0;
+    bool noiseActive = false;
+    if (mode_ == STEREO_FIXED_INTERVAL)
+        activeFor = fixedInterval_;
+    else if (est.lifetime > 0)
+        activeFor = activeSpan(est.lifetime);
+    else if (e.t < coldStartEnd)
+    {
+        // Cold start: during the plane fit's first time window the surface cannot hold the history a fit
+        // needs, so a scene's first edges fail it for want of neighbours, not for being noise, and without
+        // them neither sensor has anything active to match against. Such an event gets no lifetime of its
+        // own but stays visible to matching as if its lifetime were the fixed interval (FIXED_INTERVAL's
+        // activity, which needs no history).
+        activeFor = activeSpan(fixedInterval_);
+    }
+    else
+    {
+        // No plane: on a weak edge, where only some pixels fire, often the edge's own event (setNoiseActiveTime).
+        activeFor = noiseActiveTime_;
+        noiseActive = true;
+    }
+    // A later event of this pixel and polarity, already in the map (look-ahead), keeps it active until its
+    // own decision.
+    if (!laterPending)
+    {
+        if (activeFor > 0)
+            maps_[c].activate(r.x, r.y, p, e.t, timeAfter(e.t, activeFor), est.lifetime, est.flow,
+                              status == LIFETIME_MATCHED ? lifetimeCopies : 0);
+        else
+            maps_[c].deactivate(r.x, r.y, p);
+    }
+
+    // The neighbours read each event's own estimate (remember below); the output is averaged.
+    const float ownDisparity = est.disparity;
+    if (ownDisparity >= 0 && averagingRadius_ > 0)
+        est.disparity = averagedDisparity(c, r, e.t, ownDisparity, m.counterpartX);
+    if (est.disparity >= 0)
+    {
+        est.flags |= STEREO_HAS_DISPARITY;
+        if (est.disparity > 0 && focalBaseline_ != 0)
+            est.depth = (float)(focalBaseline_ / est.disparity);
+    }
+    if (est.lifetime > 0)
+    {
+        est.flags |= STEREO_HAS_LIFETIME;
+        if (status == LIFETIME_MATCHED)
+            est.flags |= STEREO_LIFETIME_MATCHED;
+        else if (status == LIFETIME_PREDICTED)
+            est.flags |= STEREO_LIFETIME_PREDICTED;
+    }
+    else if (status == LIFETIME_NOISE)
+    {
+        est.flags |= STEREO_NOISE;
+        est.flow = Vec2f();
+    }
+    // A noise event's disparity has no plane behind it, and noise finds some candidate: it joins the
+    // descriptors (above) but not the neighbours' estimates that the prior, the left-right check and the
+    // border's estimates read.
+    estimates_[c].remember(r, e.t, noiseActive ? 0 : activeFor, ownDisparity);
+}
+
+void StereoEventMatcherImpl::activateUndecided(int c, Point r, int p, int64 t)
+{
+    maps_[c].activate(r.x, r.y, p, t, std::numeric_limits<int64>::max(), 0.f, Vec2f());
+}
+
+int64 StereoEventMatcherImpl::activeSpan(double lifetime) const
+{
+    const double span = std::min(lifetime * activeDistance_, (double)maxLifetime_);
+    return std::max<int64>(1, (int64)std::llround(span));
+}
+
+Point StereoEventMatcherImpl::admit(const Event& e)
+{
+    if (e.camera > 1)
+        CV_Error_(Error::StsBadArg, ("StereoEventMatcher: event (t=%lld us, x=%d, y=%d) has camera %d; a stereo "
+                                     "stream has CAMERA_LEFT (0) and CAMERA_RIGHT (1)", (long long)e.t, e.x, e.y, e.camera));
+    if ((unsigned)e.x >= (unsigned)size_.width || (unsigned)e.y >= (unsigned)size_.height)
+        CV_Error_(Error::StsOutOfRange, ("StereoEventMatcher: event at (x=%d, y=%d), t=%lld us, camera %d, is outside "
+                                         "the %d x %d sensor", e.x, e.y, (long long)e.t, e.camera, size_.width, size_.height));
+    if (e.t == EventSurface::NO_EVENT)
+        CV_Error_(Error::StsOutOfRange, ("StereoEventMatcher: event (x=%d, y=%d, camera %d) has t = INT64_MIN, which is "
+                                         "reserved for EventSurface::NO_EVENT", e.x, e.y, e.camera));
+    if (e.t < lastTime_)
+        CV_Error_(Error::StsBadArg, ("StereoEventMatcher: event at t=%lld us (x=%d, y=%d, camera %d) is earlier than the "
+                                     "previous one (t=%lld us): events of both sensors must come merged in time order "
+                                     "(mergeStereoEvents, EventCapture::openStereo)", (long long)e.t, e.x, e.y,
+                                     e.camera, (long long)lastTime_));
+    // The stream starts, or resumes after a gap longer than the plane fit's time window: the surfaces hold
+    // no usable history, and the cold start (processEvent) runs for one time window.
+    const int64 window = (int64)std::min(estimators_[e.camera]->getTimeWindow(), 1e18);
+    if (lastTime_ == std::numeric_limits<int64>::min() || e.t > timeAfter(lastTime_, window))
+        coldStartEnd_ = timeAfter(e.t, window);
+    lastTime_ = e.t;
+    if (lut_[e.camera].empty())
+        return Point(e.x, e.y);
+    const int r = lut_[e.camera][(size_t)e.y * size_.width + e.x];
+    return r < 0 ? Point(-1, -1) : Point(r % size_.width, r / size_.width);
+}
+
+}  // namespace detail
+}  // namespace event
+}  // namespace cv
