@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# ctest `doc_figures`: the figures the docs quote for the real recordings and for the DAVIS240-pair scenes
+# ctest `doc_figures`: the figures the docs quote for the real recordings, the DAVIS240-pair scenes and the
+# design choices (perf/design_figures)
 # come from today's build. Each documented command runs (on ../shared/data, or on the simulator), the figure
 # is taken from what it prints, formatted as the docs write it, and must appear in the doc that quotes it
 # (counts exactly, percentages to the decimal the doc gives). A figure that moved fails with the command, the
@@ -58,6 +59,7 @@ expectPlain() { if sed 's/[*][*]//g' "$repo/$1" | grep -F -- "$2" > /dev/null; t
 # them: p10 interval to 0.1 ms, median to the ms, the isolated share to the percent, no p90.
 # The simulations run side by side; a run that fails leaves no figure, and its check fails.
 "$samples/event_info" --stats --scene=boxes_pair,boxes_fast_pair,walking_pair --duration-ms=3000 > "$work/pairs.txt" &
+"$build/perf/design_figures" > "$work/design.txt" &
 for scene in boxes_pair boxes_fast_pair walking_pair; do
   stereo "$scene.own" --scene=$scene --duration-ms=3000 --set=averagingRadius=0 --right-time-offset-ms=0 &
   stereo "$scene.averaged" --scene=$scene --duration-ms=3000 --right-time-offset-ms=0 &
@@ -83,6 +85,34 @@ for scene in boxes_pair boxes_fast_pair walking_pair; do
   expectPlain doc/simulator.md "| \`$scene\` | $own % | $misses | $averaged % | $defaults % (" "the same at the defaults"
   expectPlain doc/stereo.md "| $clock | $averaged % | $defaults % | $density % |" "event_stereo --scene=$scene --duration-ms=3000 --no-csv: clock estimate, matching rates, density"
 done
+
+# The design choices' figures (perf/design_figures), as doc/benchmarks.md, doc/stereo.md and doc/lifetime.md
+# quote them.
+designRow() { grep -F -- "| $1" "$work/design.txt" | head -1 | awk -F' [|] ' -v f="$2" '{ v = $f; sub(/ .*/, "", v); print v }'; }
+expect doc/benchmarks.md "with rejection below 0.15, $(designRow "boxes, 600 ms, minConfidence=0.15, priorTolerance=30" 3) % of the left events on" \
+  "design_figures --figures=prior: with the prior, on horizontal edges"
+expect doc/benchmarks.md "matched with the prior and $(designRow "boxes, 600 ms, minConfidence=0.15, priorTolerance=0" 3) % without it" \
+  "design_figures --figures=prior: without it"
+expect doc/stereo.md "$(designRow "boxes, 600 ms: left events" 3) % of those events get a disparity within 1 px" \
+  "design_figures --figures=beyond_view"
+startUp() { grep -F -- "| plane, $1" "$work/design.txt" | awk -F' [|] ' '{ sub(/ [|]$/, "", $4); printf "%s, %s and %s", $2, $3, $4 }'; }
+expect doc/stereo.md "is $(startUp maxLifetimeCopies) in the first three 100 ms with no limit, $(startUp defaults)" \
+  "design_figures --figures=start_up"
+# The bars table: the fastest speed on its own row, the four others on one, inlierDistance 0 then 0.75.
+bars() { grep -F -- "| $1 |" "$work/design.txt" | awk -F' [|] ' '{ v = $4; sub(/ .*/, "", v); f[NR] = $3; s[NR] = v }
+  END { printf "| 0.3 ms/px | %s | %s |;| 0.6 / 1 / 3.3 / 10 ms/px | %s / %s / %s / %s | %s / %s / %s / %s |",
+        f[1], s[1], f[2], f[3], f[4], f[5], s[2], s[3], s[4], s[5] }'; }
+for look in "sharp, log contrast 0.5" "blurred 0.7 px, log contrast 1.0"; do
+  IFS=';' read -r fastest others <<< "$(bars "$look")"
+  expectPlain doc/lifetime.md "$fastest" "design_figures --figures=bars: $look at 0.3 ms/px"
+  expectPlain doc/lifetime.md "$others" "design_figures --figures=bars: $look at 0.6-10 ms/px"
+done
+halfFiring() { grep -F -- "| half-firing" "$work/design.txt" | sed -n "$1p" | sed -n "s/.*$2: \([0-9.]*\) .*/\1/p"; }
+expect doc/lifetime.md "median $(halfFiring 1 "timeWindow 100 ms") times the closed form" \
+  "design_figures --figures=bars: half-firing bars at 0.3 ms/px, 100 ms window"
+expect doc/lifetime.md "and $(halfFiring 2 "timeWindow 100 ms") times at 1 ms/px" "design_figures --figures=bars: half-firing bars at 1 ms/px, 100 ms window"
+expect doc/lifetime.md "$(halfFiring 1 "8 px of travel") and $(halfFiring 2 "8 px of travel") times the closed form" \
+  "design_figures --figures=bars: half-firing bars, 8 px of travel"
 
 if [ ! -d "$tum" ]; then
   # The real recordings' figures need them; the simulated ones above are checked (a failure there is one).

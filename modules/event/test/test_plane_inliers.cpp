@@ -80,7 +80,6 @@ TEST(Event_PlaneInliers, counts_the_points_placed_on_each_plane)
 TEST(Event_PlaneInliers, vector_kernels_count_as_the_scalar_one)
 {
     const PlaneInlierKernels vector = planeInlierKernelsForThisCpu(), scalar = scalarPlaneInlierKernels();
-    std::cout << "plane inlier kernels: " << vector.name << std::endl;
     RNG rng(20261127);
     int compared = 0;
     for (int m = 0; m <= 31 * 31 - 1; m += m < 40 ? 1 : 37)

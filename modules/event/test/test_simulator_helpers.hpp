@@ -9,6 +9,9 @@
 
 #include "opencv2/event.hpp"
 
+#include <algorithm>
+#include <cmath>
+#include <utility>
 #include <vector>
 
 namespace opencv_test {
@@ -63,6 +66,58 @@ inline LeftCameraEvents generateLeftCamera(cv::event::StereoEventSimulator& sim,
             run.truthRows.push_back((int)i);
         }
     return run;
+}
+
+/** Bright vertical bars, 4 px wide and 12 px apart, 1 m away, sliding right at @p speed px/s over a plain wall,
+seen by the realistic scenes' sensor (boxes: threshold spread, 0.5 ms refractory period, latency and jitter,
+noise) on a 64 x 32 crop, through a LifetimeEstimator with @p inlierDistance and @p timeWindowUs. Returns the
+median ratio of the estimated lifetimes to the closed form 1 / speed over the left signal events after the first
+20 px of travel, and the share of them with a lifetime. The unit tests and the design_figures benchmark share it. */
+inline std::pair<double, double> barsLifetimeRatio(double speed, double logContrast, double blurPx,
+                                                   double inlierDistance, double timeWindowUs = 100000)
+{
+    using namespace cv::event;
+    SimulatorSettings s = StereoEventSimulator::create("boxes")->getSettings();
+    s.resolution = cv::Size(64, 32);
+    s.blurSigmaPx = blurPx;
+    const double px = 1.0 / s.focalLength;  // metres per pixel at 1 m
+    std::vector<SimulatedPlane> planes(1);
+    planes[0].center = cv::Vec3d(0, 0, 3);
+    planes[0].halfSize = cv::Vec2d(2, 2);
+    planes[0].texture = TEXTURE_UNIFORM;
+    planes[0].intensity = 0.2;
+    const double travel = 100;  // px
+    for (double x = -32 - travel - 12; x < 32 + 12; x += 12)
+    {
+        SimulatedPlane bar = planes[0];
+        bar.center = cv::Vec3d(x * px, 0, 1);
+        bar.halfSize = cv::Vec2d(2 * px, 40 * px);
+        bar.intensity = 0.2 * std::exp(logContrast);
+        bar.velocity = cv::Vec3d(speed * px, 0, 0);
+        planes.push_back(bar);
+    }
+    cv::Ptr<StereoEventSimulator> sim = StereoEventSimulator::create(planes, s);
+    cv::Ptr<LifetimeEstimator> est = LifetimeEstimator::create(s.resolution);
+    est->setInlierDistance(inlierDistance);
+    est->setTimeWindow(timeWindowUs);
+    const LeftCameraEvents run = generateLeftCamera(*sim, travel / speed * 1e6);
+    const std::vector<Event>& left = run.events;
+    cv::Mat lifetimes;
+    est->process(left, lifetimes);
+    std::vector<double> ratio;
+    int signal = 0;
+    for (size_t k = 0; k < left.size(); k++)
+    {
+        const bool noise = ((int)run.groundTruth.at<float>(run.truthRows[k], GT_FLAGS) & GT_FLAG_NOISE) != 0;
+        if (noise || left[k].t < 20 / speed * 1e6)
+            continue;
+        signal++;
+        if (lifetimes.at<float>((int)k) > 0)
+            ratio.push_back(lifetimes.at<float>((int)k) / (1e6 / speed));
+    }
+    CV_Assert(signal > 1000);
+    std::nth_element(ratio.begin(), ratio.begin() + (std::ptrdiff_t)(ratio.size() / 2), ratio.end());
+    return std::make_pair(ratio[ratio.size() / 2], (double)ratio.size() / signal);
 }
 
 /** The first @p untilUs of a built-in scene (both cameras' events), with its settings changed by

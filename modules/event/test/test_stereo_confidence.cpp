@@ -55,8 +55,6 @@ TEST(StereoEventMatcher_Confidence, rejection_is_the_threshold_and_the_confidenc
     for (size_t i = 0; i < ranked.size(); i++)
         (i < half ? goodTop : goodBottom) += ranked[i].second;
     const double top = 100.0 * (double)goodTop / (double)half, bottom = 100.0 * (double)goodBottom / (double)(ranked.size() - half);
-    std::cout << "boxes, threshold 0: within 1 px " << top << " % of the more confident half, " << bottom
-              << " % of the less confident half" << std::endl;
     EXPECT_LT(100 - top, (100 - bottom) / 4);
     EXPECT_GT(top, 98);
 }
@@ -111,10 +109,6 @@ TEST(StereoEventMatcher_Confidence, an_uncertain_match_passes_its_lifetime_only_
     };
     const double noiseShareCalled = 100.0 * (double)calledNoiseTrue / (double)std::max<int64>(1, calledNoise);
     const double noiseSharePassed = 100.0 * (double)passedTrue / (double)std::max<int64>(1, passed);
-    std::cout << "boxes, matches below confidence " << threshold << ": " << calledNoise << " called noise ("
-              << noiseShareCalled << " % noise), " << passed << " with the match's lifetime (" << noiseSharePassed
-              << " % noise); noise found: " << noiseRecall(checked) << " % (at 0: " << noiseRecall(copied) << " %)"
-              << std::endl;
     EXPECT_GT(calledNoise, 100);
     EXPECT_GT(passed, 100);
     EXPECT_GT(noiseShareCalled, noiseSharePassed + 30);
@@ -163,10 +157,6 @@ TEST(StereoEventMatcher_Confidence, an_uncertain_match_does_not_override_the_eve
         copiedLifetimes += (copied.flags[i] & STEREO_HAS_DISPARITY) && copied.confidence[i] < copyFrom
                            && (copied.flags[i] & STEREO_LIFETIME_MATCHED);
     const int64 wrongOwn = wrongBelow(own, copyFrom), wrongCopied = wrongBelow(copied, copyFrom);
-    std::cout << "boxes_fast, matches below confidence " << copyFrom << ": " << ownPlanes
-              << " events with their own plane, " << wrongOwn << " left ones wrong (at 0: " << copiedLifetimes
-              << " with the match's lifetime, " << wrongCopied << " wrong); matching rate " << matchingRate(own)
-              << " % (at 0: " << matchingRate(copied) << " %)" << std::endl;
     EXPECT_GT(ownPlanes, 5000);
     EXPECT_GT(copiedLifetimes, 5000);
     EXPECT_LT(wrongOwn, wrongCopied);
@@ -187,16 +177,12 @@ TEST(StereoEventMatcher_Confidence, temporal_prior_raises_the_matching_rate_on_s
         m.setMinConfidence(0.15);
         m.setPriorTolerance(30);
     });
-    std::cout << "boxes: matching rate " << matchingRate(without) << " % without the prior, " << matchingRate(with)
-              << " % with it; within 1 px of estimated " << within1(without) << " / " << within1(with) << " %" << std::endl;
     EXPECT_GT(matchingRate(with), matchingRate(without) + 3);
     EXPECT_GT(within1(with), 96);
     // On a horizontal edge the row search cannot tell the candidates along the edge apart, and the event's
     // close neighbours are as ambiguous as it is: the prior reads along the row to the edge's ends. Measured:
     // 63.7 % without the prior, 87.5 % with it.
     const double edgesWithout = matchingRate(without, true), edgesWith = matchingRate(with, true);
-    std::cout << "boxes, events on horizontal edges: matching rate " << edgesWithout << " % without the prior, "
-              << edgesWith << " % with it" << std::endl;
     EXPECT_GT(edgesWith, edgesWithout + 20);
 }
 

@@ -147,8 +147,6 @@ TEST(StereoEventMatcher, textured_scenes_meet_the_accuracy_and_density_targets)
         EXPECT_GE(a.within1, 95.0) << scene;
         EXPECT_GE(a.density, 80.0) << scene;
         EXPECT_LE(a.depthError, 0.05) << scene;
-        std::cout << scene << ": density " << a.density << " %, within 1 px " << a.within1 << " %, MAE " << a.meanAbsError
-                  << " px, depth error " << 100 * a.depthError << " %" << std::endl;
     }
 }
 
@@ -195,11 +193,8 @@ TEST(StereoEventMatcher, subpixel_disparities_are_not_pulled_towards_whole_pixel
         ASSERT_GT(n, 10000) << disparity;
         const double meanError = sum / n;
         pull += (fraction < 0.5 ? -meanError : meanError) / 4;  // towards 15 below 15.5, towards 16 above
-        std::cout << "plane at " << disparity << " px: mean signed error " << meanError << " px over " << n
-                  << " estimates" << std::endl;
         EXPECT_LT(std::abs(meanError), 0.05) << disparity;
     }
-    std::cout << "pull towards whole pixels: " << pull << " px" << std::endl;
     EXPECT_LT(std::abs(pull), 0.025);
 }
 
@@ -218,8 +213,6 @@ TEST(StereoEventMatcher, lifetime_modes_estimate_as_many_events_as_fixed_interva
         for (int mode : { (int)STEREO_COUPLED, (int)STEREO_DECOUPLED })
         {
             const Accuracy a = simulate(scene, mode, 99);
-            std::cout << scene << ", first 99 ms, " << getStereoModeName(mode) << ": density " << a.density
-                      << " % (fixed interval " << fixed.density << " %), within 1 px " << a.within1 << " %" << std::endl;
             EXPECT_GE(a.density, fixed.density - 2) << scene << ", " << getStereoModeName(mode);
             EXPECT_GE(a.within1, fixed.within1 - 0.5) << scene << ", " << getStereoModeName(mode);
         }
@@ -233,7 +226,6 @@ TEST(StereoEventMatcher, lifetime_modes_estimate_as_many_events_as_fixed_interva
 TEST(StereoEventMatcher, events_at_the_outer_border_keep_their_disparity)
 {
     const Accuracy a = simulate("plane", STEREO_COUPLED, 132, 4);
-    std::cout << "plane, outer 4 px: density " << a.density << " %, within 1 px " << a.within1 << " %" << std::endl;
     EXPECT_GE(a.within1, 98.0);
     EXPECT_GE(a.density, 90.0);
 }
@@ -254,13 +246,10 @@ TEST(StereoEventMatcher, coupled_beats_frame_sgbm_on_textured_scenes)
     {
         const Accuracy coupled = simulate(s.scene, STEREO_COUPLED, 264);
         const Accuracy sgbm = simulate(s.scene, STEREO_FRAME_SGBM, 264);
-        std::cout << s.scene << ": coupled: density " << coupled.density << " %, within 1 px " << coupled.within1
-                  << " %; sgbm: density " << sgbm.density << " %, within 1 px " << sgbm.within1 << " %" << std::endl;
         EXPECT_GE(coupled.density, sgbm.density) << s.scene;
         EXPECT_GE(coupled.density * coupled.within1 / 100, sgbm.density * sgbm.within1 / 100 + s.morePointsRight)
             << s.scene;
         const double atSgbmDensity = coupled.within1AtDensity(sgbm.density);
-        std::cout << s.scene << ": coupled at sgbm's density: within 1 px " << atSgbmDensity << " %" << std::endl;
         EXPECT_GE(atSgbmDensity, sgbm.within1 - 0.15) << s.scene;
     }
 }
@@ -322,8 +311,6 @@ TEST(StereoEventMatcher, coupled_lifetimes_are_refitted_after_a_copy_on_changing
     for (const char* scene : { "walking", "walking_near" })
     {
         const double limited = coupledLifetimeError(scene, false), unlimited = coupledLifetimeError(scene, true);
-        std::cout << scene << ", COUPLED median lifetime error: " << 100 * limited << " % (no limit on copies: "
-                  << 100 * unlimited << " %)" << std::endl;
         EXPECT_LT(limited, 0.2) << scene;
         EXPECT_GT(unlimited, 0.3) << scene;
     }
@@ -347,9 +334,6 @@ TEST(StereoEventMatcher, coupled_lifetimes_passed_on_without_limit_keep_the_star
     // it fit their own planes, and the start-up is gone after the first 100 ms.
     ASSERT_EQ(StereoEventMatcher::create()->getMaxLifetimeCopies(), 1);
     const std::vector<double> unlimited = planeLifetimeRatios(true, 300), limited = planeLifetimeRatios(false, 300);
-    std::cout << format("plane, COUPLED median lifetime / truth per 100 ms: no limit on copies %.2f, %.2f, %.2f; "
-                        "one copy %.2f, %.2f, %.2f", unlimited[0], unlimited[1], unlimited[2], limited[0],
-                        limited[1], limited[2]) << std::endl;
     EXPECT_LT(unlimited[0], 0.4);
     EXPECT_LT(unlimited[2], 0.7);  // still far from the truth after 200 ms
     for (int k = 1; k < 3; k++)
@@ -368,7 +352,6 @@ TEST(StereoEventMatcher, coupled_leads_frame_sgbm_by_ten_points_on_the_near_walk
     const Accuracy coupled = simulate("walking_near", STEREO_COUPLED, 495);
     const Accuracy sgbm = simulate("walking_near", STEREO_FRAME_SGBM, 495);
     const double coupledRate = coupled.density * coupled.within1 / 100, sgbmRate = sgbm.density * sgbm.within1 / 100;
-    std::cout << "walking_near: matching rate COUPLED " << coupledRate << " %, SGBM " << sgbmRate << " %" << std::endl;
     EXPECT_GE(coupledRate, 85.0);
     EXPECT_GE(coupledRate, sgbmRate + 10);
 }
@@ -379,8 +362,6 @@ TEST(StereoEventMatcher, coupled_gives_the_weak_sensor_more_lifetimes_than_decou
 {
     const Accuracy coupled = simulate("faint_line", STEREO_COUPLED, 297);
     const Accuracy decoupled = simulate("faint_line", STEREO_DECOUPLED, 297);
-    std::cout << "right-sensor events with a lifetime: coupled " << coupled.lifetimes[1] << ", decoupled "
-              << decoupled.lifetimes[1] << std::endl;
     EXPECT_GE((double)coupled.lifetimes[1], 1.2 * (double)decoupled.lifetimes[1]);
     EXPECT_GE(coupled.lifetimes[0], decoupled.lifetimes[0]);  // the strong sensor loses nothing
 }

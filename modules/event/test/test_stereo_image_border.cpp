@@ -100,8 +100,6 @@ TEST(StereoEventMatcher_ImageBorder, the_near_object_past_the_other_view_takes_i
         }
     const double withinShare = 100.0 * (double)within / (double)unseen;
     const double wrongShare = 100.0 * (double)wrong / (double)unseen;
-    std::cout << "boxes, left events the right camera does not see: " << unseen << ", " << withinShare
-              << " % within 1 px, " << wrongShare << " % further off" << std::endl;
     ASSERT_GT(unseen, 1000);
     EXPECT_GT(withinShare, 80);
     EXPECT_LT(wrongShare, 3);

@@ -64,9 +64,6 @@ TEST(StereoEventMatcher_LookAhead, raises_the_matching_rate_on_low_contrast)
         m.setNoiseActiveTime(0);
         EXPECT_EQ(m.getLookAhead(), 10000.0);
     });
-    std::cout << "low_contrast: matching rate " << matchingRate(onArrival) << " % decided on arrival, "
-              << matchingRate(ahead) << " % with 10 ms look-ahead; within 1 px of estimated " << within1(onArrival)
-              << " / " << within1(ahead) << " %" << std::endl;
     EXPECT_GT(matchingRate(ahead), matchingRate(onArrival) + 2);
     EXPECT_GT(within1(ahead), 96);
 }

@@ -1,0 +1,199 @@
+// The figures behind the manual's account of the matcher's and the lifetime estimator's design choices, each
+// measured on the simulated experiment the manual describes (the unit tests assert the same properties with
+// margins, and print nothing):
+//   prior        boxes, 600 ms, rejection below 0.15: matching rate with and without the temporal prior, over
+//                all left signal events and over those on horizontal edges
+//   beyond_view  boxes, 600 ms: the left events the right camera does not see, within 1 px and further off
+//   start_up     plane, 300 ms: COUPLED's median lifetime over the truth per 100 ms, one copy (the default)
+//                and lifetimes passed on by every match without limit
+//   bars         bars sliding over a wall on a 64 x 32 crop of the realistic sensor: the median lifetime over
+//                the closed form 1 / speed, inlierDistance 0.75 (the default) and 0, sharp and blurred bars;
+//                bars that fire on about half the pixels, with the 100 ms time window and 8 px of travel
+//
+//   design_figures [--figures=prior,beyond_view,start_up,bars]
+
+#include <opencv2/core/utility.hpp>
+#include <opencv2/event.hpp>
+
+#include "test_simulator_helpers.hpp"  // the bars experiment, shared with the unit tests
+
+#include <algorithm>
+#include <cstdio>
+#include <functional>
+#include <sstream>
+#include <string>
+#include <vector>
+
+using namespace cv;
+using namespace cv::event;
+using opencv_test::barsLifetimeRatio;
+
+namespace {
+
+double median(std::vector<double> v)
+{
+    if (v.empty())
+        return 0;
+    std::nth_element(v.begin(), v.begin() + (std::ptrdiff_t)(v.size() / 2), v.end());
+    return v[v.size() / 2];
+}
+
+// Calls visit(events, truth, disparity, lifetime) for each 20 ms packet of COUPLED over `ms` ms of `scene`.
+void runCoupled(const std::string& scene, double ms, const std::function<void(StereoEventMatcher&)>& configure,
+                const std::function<void(double, const std::vector<Event>&, const Mat&, const Mat&, const Mat&)>& visit)
+{
+    Ptr<StereoEventSimulator> sim = StereoEventSimulator::create(scene);
+    Ptr<StereoEventMatcher> m = StereoEventMatcher::create(sim->getSensorSize(), STEREO_COUPLED);
+    configure(*m);
+    std::vector<Event> ev;
+    Mat gt, disparity, lifetime;
+    for (double t = 20000; t <= ms * 1000 + 1; t += 20000)
+    {
+        sim->generate(t, ev, gt);
+        m->process(ev, disparity, lifetime);
+        visit(t, ev, gt, disparity, lifetime);
+    }
+}
+
+void printPrior()
+{
+    for (int tolerance : { 0, 30 })
+    {
+        StereoEventScores all, horizontal;
+        runCoupled("boxes", 600,
+                   [&](StereoEventMatcher& m) {
+                       m.setMinConfidence(0.15);
+                       m.setPriorTolerance(tolerance);
+                   },
+                   [&](double, const std::vector<Event>& ev, const Mat& gt, const Mat& disparity, const Mat&) {
+                       Mat onHorizontalEdge((int)ev.size(), 1, CV_8U);
+                       for (int i = 0; i < (int)ev.size(); i++)
+                           onHorizontalEdge.at<uchar>(i) =
+                               std::abs(gt.at<float>(i, GT_FLOW_Y)) > std::abs(gt.at<float>(i, GT_FLOW_X));
+                       scoreStereoEvents(ev, disparity, gt, all);
+                       scoreStereoEvents(ev, disparity, gt, horizontal, noArray(), onHorizontalEdge);
+                   });
+        std::printf("| boxes, 600 ms, minConfidence=0.15, priorTolerance=%d | %.1f %% | %.1f %% |\n", tolerance,
+                    all.matchingRate(), horizontal.matchingRate());
+    }
+}
+
+void printBeyondView()
+{
+    int64 unseen = 0, within = 0, further = 0;
+    runCoupled("boxes", 600, [](StereoEventMatcher&) {},
+               [&](double, const std::vector<Event>& ev, const Mat& gt, const Mat& disparity, const Mat&) {
+                   for (int i = 0; i < (int)ev.size(); i++)
+                   {
+                       if (ev[(size_t)i].camera != CAMERA_LEFT || (int)gt.at<float>(i, GT_FLAGS) != GT_FLAG_OCCLUDED)
+                           continue;
+                       unseen++;
+                       const float d = disparity.at<float>(i);
+                       if (d >= 0)
+                           (std::abs(d - gt.at<float>(i, GT_DISPARITY)) <= 1 ? within : further)++;
+                   }
+               });
+    std::printf("| boxes, 600 ms: left events the right camera does not see | %lld | %.1f %% within 1 px | %.1f %% "
+                "further off |\n", (long long)unseen, 100.0 * within / std::max<int64>(1, unseen),
+                100.0 * further / std::max<int64>(1, unseen));
+}
+
+void printStartUp()
+{
+    for (bool withoutLimit : { false, true })
+    {
+        std::vector<std::vector<double>> ratios(3);
+        runCoupled("plane", 300,
+                   [&](StereoEventMatcher& m) {
+                       if (withoutLimit)
+                       {
+                           m.setMaxLifetimeCopies(255);
+                           m.setLifetimeCopyConfidence(0);
+                       }
+                   },
+                   [&](double t, const std::vector<Event>& ev, const Mat& gt, const Mat&, const Mat& lifetime) {
+                       for (int i = 0; i < (int)ev.size(); i++)
+                       {
+                           const float truth = gt.at<float>(i, GT_LIFETIME), l = lifetime.at<float>(i);
+                           if (l > 0 && truth > 0 && !((int)gt.at<float>(i, GT_FLAGS) & GT_FLAG_NOISE))
+                               ratios[(size_t)((t - 20000) / 100000)].push_back(l / truth);
+                       }
+                   });
+        std::printf("| plane, %s | %.2f | %.2f | %.2f |\n",
+                    withoutLimit ? "maxLifetimeCopies=255,lifetimeCopyConfidence=0" : "defaults (one copy)",
+                    median(ratios[0]), median(ratios[1]), median(ratios[2]));
+    }
+}
+
+void printBars()
+{
+    struct Bars { const char* name; double logContrast, blurPx; } bars[] = { { "sharp, log contrast 0.5", 0.5, 0 },
+                                                                            { "blurred 0.7 px, log contrast 1.0", 1.0, 0.7 } };
+    for (const Bars& b : bars)
+        for (double speed : { 3333.0, 1667.0, 1000.0, 300.0, 100.0 })
+        {
+            const std::pair<double, double> fixed = barsLifetimeRatio(speed, b.logContrast, b.blurPx, 0);
+            const std::pair<double, double> scaled = barsLifetimeRatio(speed, b.logContrast, b.blurPx, 0.75);
+            std::printf("| %s | %.1f ms/px | %.2f | %.2f (%.1f %% with a lifetime) |\n", b.name, 1000 / speed,
+                        fixed.first, scaled.first, 100 * scaled.second);
+        }
+    for (double speed : { 3333.0, 1000.0 })
+    {
+        const std::pair<double, double> whole = barsLifetimeRatio(speed, 0.35, 0, 0.75);
+        const std::pair<double, double> windowed = barsLifetimeRatio(speed, 0.35, 0, 0.75, 8 / speed * 1e6);
+        std::printf("| half-firing, log contrast 0.35 | %.1f ms/px | timeWindow 100 ms: %.1f (%.1f %%) | 8 px of "
+                    "travel: %.2f (%.1f %%) |\n", 1000 / speed, whole.first, 100 * whole.second, windowed.first,
+                    100 * windowed.second);
+    }
+}
+
+}  // namespace
+
+int main(int argc, char** argv)
+{
+    CommandLineParser parser(argc, argv,
+                             "{help h||print this message}"
+                             "{figures|prior,beyond_view,start_up,bars|which figures, comma separated}");
+    parser.about("The figures behind the manual's account of the matcher's and the lifetime estimator's design "
+                 "choices, each on its simulated experiment.");
+    if (parser.has("help"))
+    {
+        parser.printMessage();
+        return 0;
+    }
+    const std::string figures = parser.get<std::string>("figures");
+    std::stringstream list(figures);
+    std::string name;
+    while (std::getline(list, name, ','))
+    {
+        if (name == "prior")
+        {
+            std::printf("\n| temporal prior | matching rate | on horizontal edges |\n|---|---|---|\n");
+            printPrior();
+        }
+        else if (name == "beyond_view")
+        {
+            std::printf("\n| past the other camera's view | events | | |\n|---|---|---|---|\n");
+            printBeyondView();
+        }
+        else if (name == "start_up")
+        {
+            std::printf("\n| COUPLED lifetime / truth, median | 0-100 ms | 100-200 ms | 200-300 ms |\n|---|---|---|---|\n");
+            printStartUp();
+        }
+        else if (name == "bars")
+        {
+            std::printf("\n| bars | speed | lifetime / closed form, inlierDistance=0 | inlierDistance=0.75 |\n"
+                        "|---|---|---|---|\n");
+            printBars();
+        }
+        else
+        {
+            std::fprintf(stderr, "design_figures: unknown figure \"%s\" (prior, beyond_view, start_up, bars)\n",
+                         name.c_str());
+            return 2;
+        }
+        std::fflush(stdout);
+    }
+    return 0;
+}
