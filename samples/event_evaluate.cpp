@@ -85,21 +85,16 @@ private:
 
 struct EvaluationTotals
 {
-    int64 events = 0, signal = 0, noise = 0, candidates = 0, estimated = 0, within1 = 0, withLifetime = 0;
-    // The matching rate: left signal events (occluded ones included) whose disparity is within 1 px of the truth.
-    int64 leftSignal = 0, leftMatched = 0;
-    // The same over the left signal events the right camera sees (not flagged occluded): what a matcher can
-    // reach; leftSignal - leftVisible are the events no matcher can match.
-    int64 leftVisible = 0, leftVisibleMatched = 0;
-    // Where the other left signal events go: a disparity more than 1 px off, rejected (STEREO_AMBIGUOUS),
-    // no candidate (STEREO_NO_COUNTERPART); the rest had neither (outside the rectified image, or 0).
-    int64 leftWrong = 0, leftAmbiguous = 0, leftNoCounterpart = 0;
-    // The matching rate over the left signal events motion caused (flicker left out): with a flickering lamp
-    // in view, what a user's moving scene gets.
-    int64 leftMotion = 0, leftMotionMatched = 0;
+    int64 events = 0, signal = 0, withLifetime = 0;
+    // The disparities scored (scoreStereoEvents): over every event; over the left signal events the right camera
+    // sees (not flagged occluded: what a matcher can reach); over the events motion caused (flicker left out:
+    // with a flickering lamp in view, what a user's moving scene gets).
+    StereoEventScores scores, visible, motion;
+    // Left signal events without a disparity: rejected (STEREO_AMBIGUOUS), no candidate (STEREO_NO_COUNTERPART);
+    // the rest had neither (outside the rectified image).
+    int64 leftAmbiguous = 0, leftNoCounterpart = 0;
     int64 withLifetimeCamera[2] = { 0, 0 };
     int64 noiseTrue = 0, noiseFlagged = 0, noiseCorrect = 0;
-    double absError = 0, relDepthError = 0;
     std::vector<int> errorHistogram = std::vector<int>(41, 0);  // |error| in 0.25 px bins up to 10 px
     std::vector<double> lifetimeRelErrors;
     // Signal events a flickering plane caused (GT_FLAG_FLICKER); signal - flicker are the motion's.
@@ -469,6 +464,8 @@ int main(int argc, char** argv)
         std::vector<Event> window;
         std::vector<std::array<float, 6>> truth;
         Mat lastEstimate, lastTruth;
+        std::vector<uchar> visibleMask, motionMask;
+        std::vector<float> depth;
         double seconds = 0;
         double t = 0;
         for (;;)
@@ -528,6 +525,9 @@ int main(int argc, char** argv)
 
             lastEstimate = Mat::zeros(size, CV_32F);
             lastTruth = Mat::zeros(size, CV_32F);
+            visibleMask.assign(window.size(), 0);
+            motionMask.assign(window.size(), 0);
+            depth.assign(window.size(), 0.f);
             for (size_t i = 0; i < window.size(); i++)
             {
                 const std::array<float, 6>& g = truth[i];
@@ -552,56 +552,54 @@ int main(int argc, char** argv)
                     continue;
                 acc.signal++;
                 acc.flicker += (flags & GT_FLAG_FLICKER) != 0;
-                if (window[i].camera == CAMERA_LEFT)
+                motionMask[i] = !(flags & GT_FLAG_FLICKER);
+                const bool estimated = estimate.hasDisparity && estimate.disparity[i] >= 0;
+                if (window[i].camera == CAMERA_LEFT && !estimated && !estimate.flags.empty())
                 {
-                    acc.leftSignal++;
-                    acc.leftMotion += !(flags & GT_FLAG_FLICKER);
-                    const bool visible = !(flags & GT_FLAG_OCCLUDED);
-                    acc.leftVisible += visible;
-                    if (estimate.hasDisparity && estimate.disparity[i] > 0)
-                    {
-                        const bool within = std::abs(estimate.disparity[i] - g[GT_DISPARITY]) <= 1.0;
-                        acc.leftMatched += within;
-                        acc.leftVisibleMatched += within && visible;
-                        acc.leftMotionMatched += within && !(flags & GT_FLAG_FLICKER);
-                        acc.leftWrong += !within;
-                    }
-                    else if (!estimate.flags.empty())
-                    {
-                        acc.leftAmbiguous += (estimate.flags[i] & STEREO_AMBIGUOUS) != 0;
-                        acc.leftNoCounterpart += (estimate.flags[i] & STEREO_NO_COUNTERPART) != 0;
-                    }
+                    acc.leftAmbiguous += (estimate.flags[i] & STEREO_AMBIGUOUS) != 0;
+                    acc.leftNoCounterpart += (estimate.flags[i] & STEREO_NO_COUNTERPART) != 0;
                 }
                 if (flags & GT_FLAG_OCCLUDED)
                     continue;
-                acc.candidates++;
+                visibleMask[i] = 1;
                 if (!estimate.bestDisparity.empty() && estimate.bestDisparity[i] >= 0)
                     acc.ranked.push_back(std::make_pair(estimate.bestConfidence[i],
                                                         std::abs(estimate.bestDisparity[i] - g[GT_DISPARITY]) <= 1.0));
                 if (window[i].camera == CAMERA_LEFT)
                     lastTruth.at<float>(window[i].y, window[i].x) = g[GT_DISPARITY];
-                if (!estimate.hasDisparity || estimate.disparity[i] <= 0)
+                if (!estimated)
                     continue;
                 const float d = estimate.disparity[i];
-                acc.estimated++;
                 const double err = std::abs(d - g[GT_DISPARITY]);
-                acc.within1 += err <= 1.0;
-                acc.absError += err;
                 acc.errorHistogram[std::min<size_t>(acc.errorHistogram.size() - 1, (size_t)(err / 0.25))]++;
-                // Depth = f B / disparity, so |Z_est - Z| / Z = |d_true / d_est - 1| whatever f and B are.
-                acc.relDepthError += std::abs(g[GT_DISPARITY] / d - 1.0);
+                // The depth the pair's own f B gives (true depth x true disparity), whatever f and B are.
+                if (d > 0)
+                    depth[i] = g[GT_DEPTH] * g[GT_DISPARITY] / d;
                 if (window[i].camera == CAMERA_LEFT)
                     lastEstimate.at<float>(window[i].y, window[i].x) = d;
+            }
+            if (!window.empty())
+            {
+                // A method without disparities scores as one that estimates none (the counts of events stay).
+                if (!estimate.hasDisparity)
+                    estimate.disparity.assign(window.size(), -1.f);
+                const Mat truthRows((int)truth.size(), 6, CV_32F, truth.data());
+                const Mat disparity((int)window.size(), 1, CV_32F, estimate.disparity.data());
+                scoreStereoEvents(window, disparity, truthRows, acc.scores, depth);
+                scoreStereoEvents(window, disparity, truthRows, acc.visible, noArray(), visibleMask);
+                scoreStereoEvents(window, disparity, truthRows, acc.motion, noArray(), motionMask);
             }
         }
 
         // Report.
         auto share = [](int64 a, int64 b) { return b > 0 ? 100.0 * (double)a / (double)b : 0.0; };
-        const double density = share(acc.estimated, acc.candidates);
-        const double within1 = share(acc.within1, acc.estimated);
-        const double matchingRate = share(acc.leftMatched, acc.leftSignal);
-        const double mae = acc.estimated ? acc.absError / (double)acc.estimated : 0;
-        const double relDepth = acc.estimated ? 100.0 * acc.relDepthError / (double)acc.estimated : 0;
+        const StereoEventScores& scores = acc.scores;
+        const int64 candidates = (int64)scores.visibleSignal, estimated = (int64)scores.estimated;
+        const int64 leftSignal = (int64)scores.leftSignal, leftVisible = (int64)acc.visible.leftSignal;
+        const int64 leftMotion = (int64)acc.motion.leftSignal;
+        const double density = scores.density(), within1 = scores.precision(), matchingRate = scores.matchingRate();
+        const double mae = scores.meanAbsError(), relDepth = 100 * scores.meanDepthError();
+        const double leftWrong = share((int64)(scores.leftEstimated - scores.leftWithin1), leftSignal);
         const double usPerEvent = acc.events ? seconds * 1e6 / (double)acc.events : 0;
         std::string lifetimeError = "n/a", precision = "n/a", recall = "n/a";
         if (estimate.hasLifetime)
@@ -618,10 +616,10 @@ int main(int argc, char** argv)
         // Precision at fixed densities, from the ranking by confidence (the most confident first).
         std::stable_sort(acc.ranked.begin(), acc.ranked.end(),
                          [](const std::pair<float, bool>& a, const std::pair<float, bool>& b) { return a.first > b.first; });
-        const double fullDensity = share((int64)acc.ranked.size(), acc.candidates);
-        const double at50 = precisionAtDensity(acc.ranked, acc.candidates, 50);
-        const double at75 = precisionAtDensity(acc.ranked, acc.candidates, 75);
-        const double atFull = precisionAtDensity(acc.ranked, acc.candidates, fullDensity);
+        const double fullDensity = share((int64)acc.ranked.size(), candidates);
+        const double at50 = precisionAtDensity(acc.ranked, candidates, 50);
+        const double at75 = precisionAtDensity(acc.ranked, candidates, 75);
+        const double atFull = precisionAtDensity(acc.ranked, candidates, fullDensity);
         auto percent = [](double v) { return v < 0 ? std::string("n/a") : cv::format("%.1f %%", v); };
         // Every key for every method, "n/a" where the method estimates no disparities (as for lifetimes).
         auto disparityValue = [&](auto value) {
@@ -636,17 +634,17 @@ int main(int argc, char** argv)
         csv << "metric,value\n"
             << "events," << acc.events << "\n"
             << "signal_events," << acc.signal << "\n"
-            << "non_occluded_signal_events," << acc.candidates << "\n"
-            << "events_with_disparity," << disparityValue(acc.estimated) << "\n"
+            << "non_occluded_signal_events," << candidates << "\n"
+            << "events_with_disparity," << disparityValue(estimated) << "\n"
             << "disparity_density_percent," << disparityValue(density) << "\n"
             << "within_1px_percent," << disparityValue(within1) << "\n"
             << "matching_rate_percent," << disparityValue(matchingRate) << "\n"
-            << "left_occluded_percent," << disparityValue(share(acc.leftSignal - acc.leftVisible, acc.leftSignal)) << "\n"
-            << "matching_rate_visible_percent," << disparityValue(share(acc.leftVisibleMatched, acc.leftVisible)) << "\n"
-            << "matching_rate_motion_percent," << disparityValue(share(acc.leftMotionMatched, acc.leftMotion)) << "\n"
-            << "left_wrong_percent," << disparityValue(share(acc.leftWrong, acc.leftSignal)) << "\n"
-            << "left_ambiguous_percent," << disparityValue(share(acc.leftAmbiguous, acc.leftSignal)) << "\n"
-            << "left_no_counterpart_percent," << disparityValue(share(acc.leftNoCounterpart, acc.leftSignal)) << "\n"
+            << "left_occluded_percent," << disparityValue(share(leftSignal - leftVisible, leftSignal)) << "\n"
+            << "matching_rate_visible_percent," << disparityValue(acc.visible.matchingRate()) << "\n"
+            << "matching_rate_motion_percent," << disparityValue(acc.motion.matchingRate()) << "\n"
+            << "left_wrong_percent," << disparityValue(leftWrong) << "\n"
+            << "left_ambiguous_percent," << disparityValue(share(acc.leftAmbiguous, leftSignal)) << "\n"
+            << "left_no_counterpart_percent," << disparityValue(share(acc.leftNoCounterpart, leftSignal)) << "\n"
             << "precision_at_50_percent_density," << disparityValue(at50) << "\n"
             << "precision_at_75_percent_density," << disparityValue(at75) << "\n"
             << "unfiltered_density_percent," << disparityValue(fullDensity) << "\n"
@@ -691,19 +689,19 @@ int main(int argc, char** argv)
            << "| metric | value |\n|---|---|\n"
            << "| events (signal / noise) | " << acc.events << " (" << acc.signal << " / " << acc.noiseTrue << ") |\n";
         if (disparities)
-            md << "| disparity density (estimated / non-occluded signal) | " << density << " % (" << acc.estimated << " / " << acc.candidates << ") |\n"
+            md << "| disparity density (estimated / non-occluded signal) | " << density << " % (" << estimated << " / " << candidates << ") |\n"
                << "| estimated events within 1 px | " << within1 << " % |\n"
                << "| matching rate (left signal events within 1 px of the truth / all left signal events) | " << matchingRate
-               << " % (" << acc.leftMatched << " / " << acc.leftSignal << ") |\n"
-               << "| ... over the left signal events the right camera sees (" << share(acc.leftSignal - acc.leftVisible, acc.leftSignal)
-               << " % are occluded: no matcher can match them) | " << share(acc.leftVisibleMatched, acc.leftVisible) << " % ("
-               << acc.leftVisibleMatched << " / " << acc.leftVisible << ") |\n"
-               << "| ... over the left signal events motion caused (" << share(acc.leftSignal - acc.leftMotion, acc.leftSignal)
-               << " % are the flicker's) | " << share(acc.leftMotionMatched, acc.leftMotion) << " % (" << acc.leftMotionMatched
-               << " / " << acc.leftMotion << ") |\n"
+               << " % (" << (int64)scores.leftWithin1 << " / " << leftSignal << ") |\n"
+               << "| ... over the left signal events the right camera sees (" << share(leftSignal - leftVisible, leftSignal)
+               << " % are occluded: no matcher can match them) | " << acc.visible.matchingRate() << " % ("
+               << (int64)acc.visible.leftWithin1 << " / " << leftVisible << ") |\n"
+               << "| ... over the left signal events motion caused (" << share(leftSignal - leftMotion, leftSignal)
+               << " % are the flicker's) | " << acc.motion.matchingRate() << " % (" << (int64)acc.motion.leftWithin1
+               << " / " << leftMotion << ") |\n"
                << "| left signal events more than 1 px off / rejected (ambiguous) / without a candidate | "
-               << share(acc.leftWrong, acc.leftSignal) << " / " << share(acc.leftAmbiguous, acc.leftSignal) << " / "
-               << share(acc.leftNoCounterpart, acc.leftSignal) << " % |\n"
+               << leftWrong << " / " << share(acc.leftAmbiguous, leftSignal) << " / "
+               << share(acc.leftNoCounterpart, leftSignal) << " % |\n"
                << "| precision (within 1 px) of the most confident estimates at 50 / 75 % density | "
                << (acc.ranked.empty() ? std::string("n/a (" + o.method + " has no confidence)") : percent(at50) + " / " + percent(at75)) << " |\n"
                << "| ... with no rejection (every event's best estimate): density, precision | "
@@ -730,7 +728,7 @@ int main(int argc, char** argv)
                << "![estimate | ground truth](disparity_vs_truth.png)\n";
             if (!acc.ranked.empty())
             {
-                drawDensityPrecision(acc.ranked, acc.candidates, density, within1, o.output + "/density_precision.png",
+                drawDensityPrecision(acc.ranked, candidates, density, within1, o.output + "/density_precision.png",
                                      "precision against density, ranked by confidence (" + o.method + ")");
                 md << "\n![density-precision curve](density_precision.png)\n";
             }

@@ -61,6 +61,17 @@ TEST(Event_StereoEvaluation, counts_a_hand_made_packet_as_constructed)
     EXPECT_DOUBLE_EQ(50.0, s.matchingRate());
     EXPECT_DOUBLE_EQ(7.5 / 4, s.meanAbsError());
     EXPECT_NEAR(0.6 / 4, s.meanDepthError(), 1e-6);
+
+    // Row 0's disparity at infinity: a depth of 0 or an infinite one is none.
+    for (float none : { 0.f, std::numeric_limits<float>::infinity() })
+    {
+        Mat depth = p.depth.clone();
+        depth.at<float>(0) = none;
+        StereoEventScores withoutRow0;
+        scoreStereoEvents(p.events, p.disparity, p.truth, withoutRow0, depth);
+        EXPECT_EQ(3, withoutRow0.depthEstimated) << none;
+        EXPECT_NEAR(1.0 / 2, withoutRow0.depthErrorSum, 1e-5) << none;
+    }
 }
 
 TEST(Event_StereoEvaluation, adds_packets_and_counts_only_the_masked_events)

@@ -65,9 +65,11 @@ void scoreStereoEvents(InputArray events, InputArray disparity, InputArray groun
         scores.estimated++;
         scores.within1 += error <= 1;
         scores.absErrorSum += error;
-        if (!z.empty() && g[GT_DEPTH] > 0)
+        // A disparity of 0 has no depth: the matcher outputs 0 there, and an infinite one would swamp the mean.
+        const float estimatedDepth = z.empty() ? 0.f : z.ptr<float>()[i];
+        if (g[GT_DEPTH] > 0 && estimatedDepth > 0 && std::isfinite(estimatedDepth))
         {
-            scores.depthErrorSum += std::abs(z.ptr<float>()[i] - g[GT_DEPTH]) / g[GT_DEPTH];
+            scores.depthErrorSum += std::abs(estimatedDepth - g[GT_DEPTH]) / g[GT_DEPTH];
             scores.depthEstimated++;
         }
     }

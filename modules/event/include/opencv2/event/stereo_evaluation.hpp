@@ -57,7 +57,8 @@ StereoEventMatcher::process() gives it).
 @param groundTruth N x 6 CV_32F, rows as the events (StereoEventSimulator::generate()'s columns).
 @param scores the sums to add to; start from a default StereoEventScores.
 @param depth optional N x 1 CV_32F estimated depths [m]; with it, depthErrorSum adds
-|depth - true depth| / true depth over the estimated events whose true depth is positive.
+|depth - true depth| / true depth over the estimated events whose true depth is positive and whose estimated
+depth is positive and finite (a disparity of 0 has none: StereoEventMatcher outputs 0 there).
 @param mask optional N x 1 CV_8U: only events with a non-zero entry count.
 
 Sizes or types that disagree raise cv::Error::StsBadSize / StsBadArg naming the argument. An estimate is
