@@ -117,8 +117,12 @@ assert matcher.getTimeLifetimes() and matcher.getLifetimeSeconds() > 0
 matcher.reset()
 assert matcher.getLifetimeSeconds() == 0
 assert ev.getStereoModeName(ev.STEREO_DECOUPLED) == "decoupled" and ev.findStereoMode("SGBM") == ev.STEREO_FRAME_SGBM
+matcher.process(stereo)
 picture = matcher.renderDisparity(float(events[-1][0]))
 assert picture.shape[0] == 24 and picture.shape[2] == 3
+active = matcher.getActiveDisparity(float(events[-1][0]))
+assert active.shape == (24, picture.shape[1] - 56) and active.dtype == np.float32
+assert (active >= 0).any() and np.array_equal(active < 0, np.all(picture[:, :active.shape[1]] == 0, axis=2))
 # Noise filters: an isolated event goes, a column of neighbours stays (background activity).
 ba = ev.BackgroundActivityFilter_create((16, 8), 2000.0)
 column = ev.packEvents(np.array([1000.0, 1000, 1000, 50000]), np.array([3, 3, 3, 12], np.int32),

@@ -564,24 +564,35 @@ TEST(StereoEventMatcher, parameters_round_trip_through_FileStorage)
     EXPECT_DOUBLE_EQ(b->getCalibration().baseline(), 0.2);
 }
 
-TEST(StereoEventMatcher, renderDisparity_colours_active_events_and_leaves_the_rest_black)
+// Runs the events through processEvent() and returns the last left event with a disparity (and that disparity);
+// with lastOf, also each camera's per-pixel disparity output of the pixel's last event.
+static Point processLastMatched(StereoEventMatcher& m, const std::vector<Event>& ev, float& lastDisparity,
+                                Mat_<float>* lastOf = nullptr)
 {
-    const Size size(64, 24);
-    Ptr<StereoEventMatcher> m = StereoEventMatcher::create(size, STEREO_FIXED_INTERVAL);
-    m->setAveragingRadius(0);  // the picture shows each event's own estimate: without averaging, its output
-    const std::vector<Event> ev = edgePair(size, 12, 500, 300);
     StereoEventEstimate s;
     Point lastMatched(-1, -1);
-    float lastDisparity = -1;
     for (const Event& e : ev)
     {
-        m->processEvent(e, s);
+        m.processEvent(e, s);
+        if (lastOf)
+            lastOf[e.camera](e.y, e.x) = s.disparity;
         if (e.camera == CAMERA_LEFT && s.disparity >= 0)
         {
             lastMatched = Point(e.x, e.y);
             lastDisparity = s.disparity;
         }
     }
+    return lastMatched;
+}
+
+TEST(StereoEventMatcher, renderDisparity_colours_active_events_and_leaves_the_rest_black)
+{
+    const Size size(64, 24);
+    Ptr<StereoEventMatcher> m = StereoEventMatcher::create(size, STEREO_FIXED_INTERVAL);
+    m->setAveragingRadius(0);  // the picture shows each event's own estimate: without averaging, its output
+    const std::vector<Event> ev = edgePair(size, 12, 500, 300);
+    float lastDisparity = -1;
+    const Point lastMatched = processLastMatched(*m, ev, lastDisparity);
     ASSERT_GE(lastDisparity, 0.f);
     const double t = (double)ev.back().t;
     Mat img, plain;
@@ -598,6 +609,48 @@ TEST(StereoEventMatcher, renderDisparity_colours_active_events_and_leaves_the_re
     Mat later;
     m->renderDisparity(t + 20000, later, CAMERA_LEFT, false);
     EXPECT_EQ(countNonZero(later.reshape(1)), 0);
+}
+
+TEST(StereoEventMatcher, getActiveDisparity_holds_the_estimates_renderDisparity_shows)
+{
+    const Size size(64, 24);
+    Ptr<StereoEventMatcher> m = StereoEventMatcher::create(size, STEREO_FIXED_INTERVAL);
+    m->setAveragingRadius(0);  // each event outputs its own estimate, the one the map holds
+    const std::vector<Event> ev = edgePair(size, 12, 500, 300);
+    float lastDisparity = -1;
+    Mat_<float> lastOf[2] = { Mat_<float>(size, -1.f), Mat_<float>(size, -1.f) };
+    const Point lastMatched = processLastMatched(*m, ev, lastDisparity, lastOf);
+    ASSERT_GE(lastDisparity, 0.f);
+    const double t = (double)ev.back().t;
+    for (int camera : { CAMERA_LEFT, CAMERA_RIGHT })
+    {
+        Mat disparity, shown;
+        m->getActiveDisparity(t, disparity, camera);
+        m->renderDisparity(t, shown, camera, false);
+        ASSERT_EQ(disparity.type(), CV_32F);
+        ASSERT_EQ(disparity.size(), size);
+        int active = 0;
+        for (int y = 0; y < size.height; y++)
+            for (int x = 0; x < size.width; x++)
+            {
+                const float d = disparity.at<float>(y, x);
+                const bool black = shown.at<Vec3b>(y, x) == Vec3b(0, 0, 0);
+                EXPECT_EQ(d == StereoEventMatcher::NO_DISPARITY, black) << "camera " << camera << " at " << Point(x, y);
+                if (d != StereoEventMatcher::NO_DISPARITY)
+                {
+                    active++;
+                    EXPECT_EQ(d, lastOf[camera](y, x)) << "camera " << camera << " at " << Point(x, y);
+                }
+            }
+        EXPECT_GE(active, size.height) << "camera " << camera << ": at least the newest column";
+    }
+    Mat left;
+    m->getActiveDisparity(t, left, CAMERA_LEFT);
+    EXPECT_EQ(left.at<float>(lastMatched), lastDisparity);
+    Mat later;
+    m->getActiveDisparity(t + 20000, later, CAMERA_LEFT);
+    EXPECT_EQ(countNonZero(later != (float)StereoEventMatcher::NO_DISPARITY), 0);
+    EXPECT_THROW(m->getActiveDisparity(t, later, 2), cv::Exception);
 }
 
 // Closed form: an edge sweeping at 500 px/s has a lifetime of 2 ms (one pixel per lifetime), so an event

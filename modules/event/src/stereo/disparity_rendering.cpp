@@ -2,7 +2,8 @@
 // It is subject to the license terms in the LICENSE file found in the top-level directory
 // of this distribution and at http://opencv.org/license.html.
 
-// StereoEventMatcher::renderDisparity: the active estimates of one sensor as a colour image.
+// The active estimates of one sensor as a disparity map (getActiveDisparity) and as a colour image
+// (renderDisparity).
 
 #include "precomp.hpp"
 #include "stereo/stereo_event_matcher_impl.hpp"
@@ -12,25 +13,38 @@ namespace cv {
 namespace event {
 namespace detail {
 
+void StereoEventMatcherImpl::getActiveDisparity(double t, OutputArray disparity, int camera) const
+{
+    CV_CheckGE(camera, 0, "StereoEventMatcher::getActiveDisparity: camera is CAMERA_LEFT or CAMERA_RIGHT");
+    CV_CheckLE(camera, 1, "StereoEventMatcher::getActiveDisparity: camera is CAMERA_LEFT or CAMERA_RIGHT");
+    disparity.create(size_, CV_32F);
+    Mat_<float> map = disparity.getMat();
+    const ActiveEstimateMap& estimates = estimates_[camera];
+    for (int y = 0; y < size_.height; y++)
+        for (int x = 0; x < size_.width; x++)
+        {
+            float d;
+            map(y, x) = estimates.shownAt(x, y, t, d) ? d : (float)NO_DISPARITY;
+        }
+}
+
 void StereoEventMatcherImpl::renderDisparity(double t, OutputArray image, int camera, bool colourBar) const
 {
     CV_CheckGE(camera, 0, "StereoEventMatcher::renderDisparity: camera is CAMERA_LEFT or CAMERA_RIGHT");
     CV_CheckLE(camera, 1, "StereoEventMatcher::renderDisparity: camera is CAMERA_LEFT or CAMERA_RIGHT");
+    Mat_<float> disparity;
+    getActiveDisparity(t, disparity, camera);
     const int barWidth = colourBar ? 56 : 0;
     image.create(size_.height, size_.width + barWidth, CV_8UC3);
     Mat img = image.getMat();
     img.setTo(Scalar::all(0));
     const Mat lut = colourLut();
-    const ActiveEstimateMap& estimates = estimates_[camera];
     for (int y = 0; y < size_.height; y++)
     {
         Vec3b* row = img.ptr<Vec3b>(y);
         for (int x = 0; x < size_.width; x++)
-        {
-            float d;
-            if (estimates.shownAt(x, y, t, d))
-                row[x] = lut.at<Vec3b>(colourIndex(d));
-        }
+            if (disparity(y, x) != (float)NO_DISPARITY)
+                row[x] = lut.at<Vec3b>(colourIndex(disparity(y, x)));
     }
     if (!colourBar)
         return;

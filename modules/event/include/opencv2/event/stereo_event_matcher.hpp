@@ -199,6 +199,12 @@ public:
     CV_WRAP virtual void renderDisparity(double t, OutputArray image, int camera = CAMERA_LEFT,
                                          bool colourBar = true) const = 0;
 
+    /** @brief The disparities renderDisparity() shows, as numbers: per rectified pixel of @p camera, the own
+    estimate of its last event when that estimate is active at time @p t [us], NO_DISPARITY elsewhere. CV_32F,
+    the sensor's size: a sparse disparity map for code that wants one (occupancy, obstacles) without decoding
+    colours. */
+    CV_WRAP virtual void getActiveDisparity(double t, OutputArray disparity, int camera = CAMERA_LEFT) const = 0;
+
     /** @brief Forgets all events (keeps parameters and calibration). */
     CV_WRAP virtual void reset() = 0;
 
