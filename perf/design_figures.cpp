@@ -16,6 +16,7 @@
 #include <opencv2/event.hpp>
 
 #include "test_simulator_helpers.hpp"  // the bars experiment, shared with the unit tests
+#include "test_stereo_scene_runs.hpp"   // the scene runs and their measures, shared with the unit tests
 
 #include <algorithm>
 #include <cstdio>
@@ -59,43 +60,21 @@ void printPrior()
 {
     for (int tolerance : { 0, 30 })
     {
-        StereoEventScores all, horizontal;
-        runCoupled("boxes", 600,
-                   [&](StereoEventMatcher& m) {
-                       m.setMinConfidence(0.15);
-                       m.setPriorTolerance(tolerance);
-                   },
-                   [&](double, const std::vector<Event>& ev, const Mat& gt, const Mat& disparity, const Mat&) {
-                       Mat onHorizontalEdge((int)ev.size(), 1, CV_8U);
-                       for (int i = 0; i < (int)ev.size(); i++)
-                           onHorizontalEdge.at<uchar>(i) =
-                               std::abs(gt.at<float>(i, GT_FLOW_Y)) > std::abs(gt.at<float>(i, GT_FLOW_X));
-                       scoreStereoEvents(ev, disparity, gt, all);
-                       scoreStereoEvents(ev, disparity, gt, horizontal, noArray(), onHorizontalEdge);
-                   });
+        const opencv_test::SceneRun run = opencv_test::runScene("boxes", 600, [&](StereoEventMatcher& m) {
+            m.setMinConfidence(0.15);
+            m.setPriorTolerance(tolerance);
+        });
         std::printf("| boxes, 600 ms, minConfidence=0.15, priorTolerance=%d | %.1f %% | %.1f %% |\n", tolerance,
-                    all.matchingRate(), horizontal.matchingRate());
+                    run.scores.matchingRate(), run.horizontalEdgeScores.matchingRate());
     }
 }
 
 void printBeyondView()
 {
-    int64 unseen = 0, within = 0, further = 0;
-    runCoupled("boxes", 600, [](StereoEventMatcher&) {},
-               [&](double, const std::vector<Event>& ev, const Mat& gt, const Mat& disparity, const Mat&) {
-                   for (int i = 0; i < (int)ev.size(); i++)
-                   {
-                       if (ev[(size_t)i].camera != CAMERA_LEFT || (int)gt.at<float>(i, GT_FLAGS) != GT_FLAG_OCCLUDED)
-                           continue;
-                       unseen++;
-                       const float d = disparity.at<float>(i);
-                       if (d >= 0)
-                           (std::abs(d - gt.at<float>(i, GT_DISPARITY)) <= 1 ? within : further)++;
-                   }
-               });
+    const opencv_test::UnseenLeftEvents unseen =
+        opencv_test::unseenLeftEvents(opencv_test::runScene("boxes", 600, [](StereoEventMatcher&) {}));
     std::printf("| boxes, 600 ms: left events the right camera does not see | %lld | %.1f %% within 1 px | %.1f %% "
-                "further off |\n", (long long)unseen, 100.0 * within / std::max<int64>(1, unseen),
-                100.0 * further / std::max<int64>(1, unseen));
+                "further off |\n", (long long)unseen.count, unseen.withinShare, unseen.furtherShare);
 }
 
 void printStartUp()

@@ -89,20 +89,10 @@ TEST(StereoEventMatcher_ImageBorder, what_only_one_sensor_sees_takes_its_neighbo
 // the 9 x 9 cost window: 0.3 % within 1 px, 8.5 % further off).
 TEST(StereoEventMatcher_ImageBorder, the_near_object_past_the_other_view_takes_its_disparity)
 {
-    const SceneRun run = runScene("boxes", 600, [](StereoEventMatcher&) {});
-    int64 unseen = 0, within = 0, wrong = 0;
-    for (size_t i = 0; i < run.disparity.size(); i++)
-        if (run.camera[i] == CAMERA_LEFT && run.truthFlags[i] == GT_FLAG_OCCLUDED)
-        {
-            unseen++;
-            if (run.disparity[i] >= 0)
-                (std::abs(run.disparity[i] - run.truth[i]) <= 1 ? within : wrong)++;
-        }
-    const double withinShare = 100.0 * (double)within / (double)unseen;
-    const double wrongShare = 100.0 * (double)wrong / (double)unseen;
-    ASSERT_GT(unseen, 1000);
-    EXPECT_GT(withinShare, 80);
-    EXPECT_LT(wrongShare, 3);
+    const UnseenLeftEvents unseen = unseenLeftEvents(runScene("boxes", 600, [](StereoEventMatcher&) {}));
+    ASSERT_GT(unseen.count, 1000);
+    EXPECT_GT(unseen.withinShare, 80);
+    EXPECT_LT(unseen.furtherShare, 3);
 }
 
 }}  // namespace

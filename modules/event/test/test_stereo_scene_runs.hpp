@@ -6,11 +6,18 @@
 #define OPENCV_EVENT_TEST_STEREO_SCENE_RUNS_HPP
 
 // COUPLED runs over a simulated scene with the outputs and the ground truth per event, and the measures the
-// stereo tests take of them; the estimates of a run of events from process()'s outputs.
+// stereo tests (and perf/design_figures, which quotes them) take of them; the estimates of a run of events from
+// process()'s outputs.
+
+#include "opencv2/event.hpp"
 
 #include <functional>
+#include <string>
+#include <vector>
 
 namespace opencv_test {
+using namespace cv;
+using namespace cv::event;
 
 // One COUPLED run over a simulated scene, per event: the outputs and the ground truth.
 struct SceneRun
@@ -93,6 +100,30 @@ inline double matchingRate(const SceneRun& r, bool onlyHorizontalEdges = false)
 inline double within1(const SceneRun& r)
 {
     return r.scores.precision();
+}
+
+// The left events the right camera does not see (flagged occluded, nothing else): how many, and the shares [%]
+// of them with a disparity within 1 px of the truth and further off.
+struct UnseenLeftEvents
+{
+    int64 count = 0;
+    double withinShare = 0, furtherShare = 0;
+};
+
+inline UnseenLeftEvents unseenLeftEvents(const SceneRun& r)
+{
+    UnseenLeftEvents u;
+    int64 within = 0, further = 0;
+    for (size_t i = 0; i < r.disparity.size(); i++)
+        if (r.camera[i] == CAMERA_LEFT && r.truthFlags[i] == GT_FLAG_OCCLUDED)
+        {
+            u.count++;
+            if (r.disparity[i] >= 0)
+                (std::abs(r.disparity[i] - r.truth[i]) <= 1 ? within : further)++;
+        }
+    u.withinShare = 100.0 * (double)within / (double)std::max<int64>(1, u.count);
+    u.furtherShare = 100.0 * (double)further / (double)std::max<int64>(1, u.count);
+    return u;
 }
 
 }  // namespace opencv_test
