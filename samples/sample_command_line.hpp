@@ -22,8 +22,6 @@
 #include <string>
 #include <vector>
 
-/** The error for a recording whose format does not record the sensor size (text without a size line, DAT
-    without a geometry line): what to give, and where to find it. */
 /** What a program prints of an error that stopped it: a cv::Exception's own message (naming the file or the
     camera and the problem), without OpenCV's source location and function name; any other exception's text. */
 inline std::string errorText(const std::exception& e)
@@ -32,6 +30,8 @@ inline std::string errorText(const std::exception& e)
     return cvError ? cvError->err : std::string(e.what());
 }
 
+/** The error for a recording whose format does not record the sensor size (text without a size line, DAT
+    without a geometry line): what to give, and where to find it. */
 inline std::runtime_error sensorSizeMissing(const std::string& source)
 {
     return std::runtime_error(source + ": the file does not record the sensor size; pass --sensor=WxH (event_info "

@@ -3,6 +3,7 @@
 Every check compares against values fixed here, so a binding that drops or mangles a field fails.
 """
 import os
+import shutil
 import tempfile
 
 import cv2
@@ -88,9 +89,16 @@ assert d == 12 and corr.shape == (1, 41) and abs(score - 1) < 1e-9, (d, corr.sha
 exchanged = ev.packEvents(arr[:, 0], arr[:, 1].astype(np.int32), arr[:, 2].astype(np.int32),
                           np.ones(len(arr), np.int32), camera=1 - arr[:, 3].astype(np.int32))
 assert ev.estimateDominantDisparity(exchanged, (64, 24), 20)[0] == -12
+# checkStereoPair says the same, and names the exchanged cameras.
+pair = ev.checkStereoPair(stereo, (64, 24), 0, 20)
+assert pair.overlap and pair.lineUpTrusted and pair.lineUpDisparity == 12 and not pair.camerasExchanged
+assert pair.leftEvents + pair.rightEvents == len(events)
+assert ev.checkStereoPair(exchanged, (64, 24), 0, 20).camerasExchanged
 matcher = ev.StereoEventMatcher_create((64, 24), ev.STEREO_COUPLED)
 calib = ev.StereoCalibration_fromRectified((64, 24), 100.0, 0.1)
 assert abs(calib.baseline() - 0.1) < 1e-12 and calib.P2.shape == (3, 4)
+# A rectified pair's events stay where they are.
+assert np.array_equal(calib.rectifyEvents(stereo).reshape(-1), stereo.reshape(-1))
 matcher.setMaxDisparity(30)
 assert matcher.getMinConfidence() == 0  # by default every event keeps its best estimate
 matcher.setMinConfidence(0.15)
@@ -162,4 +170,13 @@ assert fitted.sum() > 60 and np.allclose(lifetimes.ravel()[fitted], 10000.0, rto
 check = ev.LifetimeArrivalCheck_create((16, 8))
 check.update(edge, lifetimes, flow)
 assert check.getSampleCount() > 50 and abs(check.getRatioQuantile(0.5) - 1.0) < 0.02, check.getRatioQuantile(0.5)
+# A simulated recording with its ground truth beside it, read back in step with its events.
+folder = tempfile.mkdtemp()
+path = os.path.join(folder, "rec.aedat4")
+written = ev.writeSimulatedRecording(ev.StereoEventSimulator_create("moving_line"), path, 50000.0)
+ok, sim_events, sim_truth = ev.StereoEventSimulator_create("moving_line").generate(50000.0)
+truth_reader = ev.SimulatedGroundTruthReader(path + ".gt.csv")
+assert truth_reader.isOpened() and written == sim_events.shape[0] > 100
+assert np.array_equal(truth_reader.read(sim_events), sim_truth) and truth_reader.getLinesRead() == written
+shutil.rmtree(folder)
 print("python bindings: cv2.event OK")

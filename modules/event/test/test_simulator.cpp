@@ -259,31 +259,44 @@ TEST(Event_Simulator, recording_round_trip_through_event_writer_and_ground_truth
     for (size_t i = 0; i < back.size(); i++)
         ASSERT_EQ(expected[i], back[i]) << i;
 
-    std::ifstream csv((path + ".gt.csv").c_str());
-    std::string line;
-    std::getline(csv, line);
-    EXPECT_EQ("t,x,y,p,camera,depth,disparity,flow_x,flow_y,lifetime,flags", line);
-    size_t rows = 0;
-    while (std::getline(csv, line))
+    // The side file holds the simulator's floats exactly, read back in two steps as a capture's packets come.
+    SimulatedGroundTruthReader reader(path + ".gt.csv");
+    const size_t half = expected.size() / 2;
+    Mat first, second;
+    reader.read(std::vector<Event>(expected.begin(), expected.begin() + half), first);
+    reader.read(std::vector<Event>(expected.begin() + half, expected.end()), second);
+    EXPECT_EQ((double)expected.size(), reader.getLinesRead());
+    Mat both;
+    vconcat(first, second, both);
+    ASSERT_EQ(gt.size(), both.size());
+    ASSERT_EQ(CV_32F, both.type());
+    EXPECT_EQ(0, cvtest::norm(gt, both, NORM_INF));
+    // Past the file's end, and an event the next line does not describe: named.
+    try
     {
-        long long t;
-        int x, y, p, c, flags;
-        float depth, disparity, fx, fy, lifetime;
-        ASSERT_EQ(11, std::sscanf(line.c_str(), "%lld,%d,%d,%d,%d,%f,%f,%f,%f,%f,%d", &t, &x, &y, &p, &c, &depth,
-                                  &disparity, &fx, &fy, &lifetime, &flags)) << line;
-        ASSERT_LT(rows, expected.size());
-        EXPECT_EQ(expected[rows], Event(t, x, y, p, c));
-        // The file holds the simulator's floats exactly.
-        const float* truth = gt.ptr<float>((int)rows);
-        ASSERT_EQ(truth[GT_DEPTH], depth) << line;
-        ASSERT_EQ(truth[GT_DISPARITY], disparity) << line;
-        ASSERT_EQ(truth[GT_FLOW_X], fx) << line;
-        ASSERT_EQ(truth[GT_FLOW_Y], fy) << line;
-        ASSERT_EQ(truth[GT_LIFETIME], lifetime) << line;
-        ASSERT_EQ((int)truth[GT_FLAGS], flags) << line;
-        rows++;
+        reader.read(std::vector<Event>(1, expected.back()), first);
+        ADD_FAILURE() << "no exception past the end";
     }
-    EXPECT_EQ(expected.size(), rows);
+    catch (const cv::Exception& e)
+    {
+        EXPECT_NE(std::string::npos, e.err.find("ends at line " + std::to_string(expected.size() + 2))) << e.err;
+    }
+    SimulatedGroundTruthReader fromStart(path + ".gt.csv");
+    std::vector<Event> shifted(expected.begin(), expected.begin() + 3);
+    shifted[2].x++;
+    try
+    {
+        fromStart.read(shifted, first);
+        ADD_FAILURE() << "no exception for a line that does not describe its event";
+    }
+    catch (const cv::Exception& e)
+    {
+        EXPECT_NE(std::string::npos, e.err.find("line 4")) << e.err;
+    }
+    SimulatedGroundTruthReader other;
+    EXPECT_THROW(other.open(path), cv::Exception);  // the recording itself: not the header
+    EXPECT_FALSE(other.isOpened());
+    EXPECT_THROW(other.open(path + ".missing"), cv::Exception);
     std::remove(path.c_str());
     std::remove((path + ".gt.csv").c_str());
 }

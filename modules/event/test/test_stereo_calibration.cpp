@@ -63,6 +63,30 @@ TEST(StereoCalibration, fromRectified_is_identity_and_gives_fB_over_d)
     EXPECT_THROW(StereoCalibration::fromRectified(Size(240, 180), 200, 0), cv::Exception);
 }
 
+TEST(StereoCalibration, rectifyEvents_moves_each_camera_by_its_own_map)
+{
+    // No distortion, no rotation: P K^-1 moves the left camera's pixels by (+5, +3) and the right one's by
+    // (-2, +1).
+    StereoCalibration c = StereoCalibration::fromRectified(Size(240, 180), 200, 0.1);
+    c.P1.at<double>(0, 2) += 5;
+    c.P1.at<double>(1, 2) += 3;
+    c.P2.at<double>(0, 2) -= 2;
+    c.P2.at<double>(1, 2) += 1;
+    std::vector<Event> ev = { Event(10, 0, 0, 1, CAMERA_LEFT), Event(20, 0, 0, 0, CAMERA_RIGHT),
+                              Event(30, 239, 179, 1, CAMERA_LEFT), Event(30, 100, 50, 0, CAMERA_RIGHT) };
+    const std::vector<Event> expected = { Event(10, 5, 3, 1, CAMERA_LEFT), Event(20, -2, 1, 0, CAMERA_RIGHT),
+                                          Event(30, 244, 182, 1, CAMERA_LEFT), Event(30, 98, 51, 0, CAMERA_RIGHT) };
+    c.rectifyEvents(ev, ev);  // in place
+    ASSERT_EQ(expected.size(), ev.size());
+    for (size_t i = 0; i < ev.size(); i++)
+        EXPECT_EQ(expected[i], ev[i]) << i;
+    std::vector<Event> none;
+    c.rectifyEvents(std::vector<Event>(), none);
+    EXPECT_TRUE(none.empty());
+    ev[2].camera = 2;
+    EXPECT_THROW(c.rectifyEvents(ev, none), cv::Exception);
+}
+
 TEST(StereoCalibration, opencv_file_with_R_T_rectifies_a_distorted_pair)
 {
     RawPair pair;

@@ -15,6 +15,7 @@
 #include "opencv2/event/lifetime_estimator.hpp"
 #include "opencv2/event/lifetime_arrival_check.hpp"
 #include "opencv2/event/stereo_calibration.hpp"
+#include "opencv2/event/stereo_pair_check.hpp"
 #include "opencv2/event/stereo_event_matcher.hpp"
 #include "opencv2/event/stereo_evaluation.hpp"
 

@@ -248,6 +248,37 @@ void StereoCalibration::rectifyPoints(InputArray points, OutputArray rectified, 
     out.convertTo(rectified, CV_32FC2);
 }
 
+void StereoCalibration::rectifyEvents(InputArray events, OutputArray rectified) const
+{
+    std::vector<Event> out = toEventVector(events);
+    for (int camera = 0; camera < 2; camera++)
+    {
+        std::vector<Point2f> raw;
+        for (const Event& e : out)
+        {
+            if (e.camera > 1)
+                CV_Error_(Error::StsBadArg, ("StereoCalibration::rectifyEvents: event with camera id %d (expected 0 or 1)",
+                                             (int)e.camera));
+            if (e.camera == camera)
+                raw.push_back(Point2f(e.x, e.y));
+        }
+        if (raw.empty())
+            continue;
+        Mat q;
+        rectifyPoints(raw, q, camera);
+        const Point2f* p = q.ptr<Point2f>();
+        for (Event& e : out)
+            if (e.camera == camera)
+            {
+                // Outside short's range only for a calibration that throws pixels far away: kept outside.
+                e.x = saturate_cast<short>(cvRound(p->x));
+                e.y = saturate_cast<short>(cvRound(p->y));
+                p++;
+            }
+    }
+    Mat(out).copyTo(rectified);
+}
+
 void StereoCalibration::read(const FileNode& node, const String& source)
 {
     StereoCalibration c = readOpenCV(node, source);

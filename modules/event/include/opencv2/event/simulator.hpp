@@ -206,6 +206,38 @@ SimulatorGroundTruthColumn). Memory does not grow with the duration.
 CV_EXPORTS_W double writeSimulatedRecording(const Ptr<StereoEventSimulator>& simulator, const String& path,
                                             double durationUs);
 
+/** @brief Reads the ground truth that writeSimulatedRecording() writes beside a recording (`<path>.gt.csv`),
+in step with the recording's events as EventCapture delivers them.
+
+Memory does not grow with the file: each read() takes the next lines. */
+class CV_EXPORTS_W SimulatedGroundTruthReader
+{
+public:
+    CV_WRAP SimulatedGroundTruthReader();
+    /** @brief Opens @p path at once; see open(). */
+    CV_WRAP explicit SimulatedGroundTruthReader(const String& path);
+    ~SimulatedGroundTruthReader();
+
+    /** @brief Opens a ground-truth file (`t,x,y,p,camera,depth,disparity,flow_x,flow_y,lifetime,flags` per
+    line, after that header). A file that cannot be opened, or whose first line is not that header, raises
+    cv::Exception naming it. */
+    CV_WRAP void open(const String& path);
+    CV_WRAP bool isOpened() const;
+
+    /** @brief The ground truth of the next events: N x 6 CV_32F, rows as @p events, columns as
+    StereoEventSimulator::generate() gives them (SimulatorGroundTruthColumn). Each line must describe its event
+    (same t, x, y, polarity and camera): a line that does not, a malformed line, or a file that ends first raise
+    cv::Exception naming the file and the line. */
+    CV_WRAP void read(InputArray events, OutputArray groundTruth);
+
+    /** @brief Lines of ground truth read so far (the events they described). */
+    CV_WRAP double getLinesRead() const;
+
+private:
+    struct Impl;
+    Ptr<Impl> impl_;
+};
+
 //! @}
 
 }  // namespace event

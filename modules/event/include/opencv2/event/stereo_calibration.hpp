@@ -57,6 +57,13 @@ struct CV_EXPORTS_W_SIMPLE StereoCalibration
     /** @brief Maps raw pixels to rectified coordinates (CV_32FC2, N x 1) for camera @p camera (CameraId). */
     CV_WRAP void rectifyPoints(InputArray points, OutputArray rectified, int camera) const;
 
+    /** @brief Moves each event of a stereo packet to its rectified pixel (rounded), by its camera column, for
+    the checks that look at rows and columns as StereoEventMatcher will (estimateRowAlignment(),
+    checkStereoPair(), estimateClockOffset()). Times, polarities and the order are kept; a pixel that
+    rectifies outside the image keeps its coordinates there (the estimates ignore it). @p rectified may be
+    @p events. Events of a camera other than 0 and 1 raise cv::Error::StsBadArg. */
+    CV_WRAP void rectifyEvents(InputArray events, OutputArray rectified) const;
+
     /** @brief Writes K1 D1 R1 P1 K2 D2 R2 P2, imageSize and fisheye under the current node. */
     void write(FileStorage& fs) const;
     /** @brief Reads what write() writes (or any OpenCV form readStereoCalibration() accepts) from @p node,

@@ -1,0 +1,52 @@
+// Pictures of the stereo samples: which windows of a run get one, and what one shows.
+
+#ifndef OPENCV_EVENT_SAMPLES_SAMPLE_STEREO_PICTURES_HPP
+#define OPENCV_EVENT_SAMPLES_SAMPLE_STEREO_PICTURES_HPP
+
+#include <opencv2/event.hpp>
+#include <opencv2/imgproc.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+
+// Pictures written by default: the first window and one each time the run passes another eighth (live, where
+// the length is unknown: windows 1, 2, 4, 8, ...). --all-frames writes every window; the video has them all.
+inline bool sampleIsPictureWindow(int64_t window, double fraction, int& lastEighth)
+{
+    if (window == 0)
+        return true;
+    if (fraction < 0)
+        return (window & (window - 1)) == 0;
+    const int eighth = (int)std::floor(fraction * 8);
+    if (eighth <= lastEighth)
+        return false;
+    lastEighth = eighth;
+    return true;
+}
+
+// Left | right active events coloured by disparity; below, when simulated, the true disparity of the window's
+// left events.
+inline cv::Mat stereoWindowPicture(const cv::Ptr<cv::event::StereoEventMatcher>& matcher, double t,
+                                   const cv::Mat& truthDisparity, int minDisparity, int maxDisparity)
+{
+    cv::Mat left, right, row;
+    matcher->renderDisparity(t, left, cv::event::CAMERA_LEFT, false);
+    matcher->renderDisparity(t, right, cv::event::CAMERA_RIGHT, true);
+    cv::hconcat(left, right, row);
+    if (truthDisparity.empty())
+        return row;
+    const cv::Size size = truthDisparity.size();
+    const double range = std::max(1, maxDisparity - minDisparity);
+    cv::Mat scaled, colour, below = cv::Mat::zeros(size.height, row.cols, CV_8UC3);
+    truthDisparity.convertTo(scaled, CV_8U, 255.0 / range, -255.0 * minDisparity / range);
+    cv::applyColorMap(scaled, colour, cv::COLORMAP_JET);
+    colour.setTo(cv::Scalar::all(0), truthDisparity <= 0);
+    colour.copyTo(below(cv::Rect(0, 0, size.width, size.height)));
+    cv::putText(below, "ground truth (left events of this window)", cv::Point(size.width + 4, 14),
+                cv::FONT_HERSHEY_PLAIN, 0.8, cv::Scalar::all(255), 1);
+    cv::vconcat(row, below, row);
+    return row;
+}
+
+#endif  // OPENCV_EVENT_SAMPLES_SAMPLE_STEREO_PICTURES_HPP
