@@ -6,7 +6,7 @@
 // prediction shortcut of Hadviger et al. 2019. See lifetime_estimator.hpp for the method.
 
 #include "precomp.hpp"
-#include "lifetime/lifetime_estimation_rows.hpp"
+#include "lifetime/row_band_lifetime_estimator.hpp"
 #include "lifetime/neighbour_along_motion.hpp"
 #include "lifetime/plane_inliers.hpp"
 #include "common/timestamp_math.hpp"
@@ -26,7 +26,7 @@ struct Prediction
     bool valid = false;
 };
 
-class LifetimeEstimatorImpl CV_FINAL : public LifetimeEstimator
+class LifetimeEstimatorImpl CV_FINAL : public RowBandLifetimeEstimator
 {
 public:
     explicit LifetimeEstimatorImpl(Size size) { setSensorSize(size); }
@@ -69,24 +69,20 @@ public:
         return processEvent(e, flow, status, own_);
     }
 
-    float processEvent(const Event& e, Vec2f& flow, int& status, LifetimeScratch& scratch)
+    float processEvent(const Event& e, Vec2f& flow, int& status, LifetimeScratch& scratch) CV_OVERRIDE
     {
         return estimate(e, nullptr, true, flow, status, scratch);
     }
 
-    // processEvent, except that an event whose plane says it is not noise takes `matched` (its lifetime and
-    // flow from a stereo match) instead of its own plane's, counted as LIFETIME_MATCHED.
     float processMatchedEvent(const Event& e, const std::pair<float, Vec2f>& matched, Vec2f& flow, int& status,
-                              LifetimeScratch& scratch)
+                              LifetimeScratch& scratch) CV_OVERRIDE
     {
         GivenMatch given(matched);
         return estimate(e, &given, true, flow, status, scratch);
     }
 
-    // processEvent, except that an event whose plane says it is noise takes what `matched` gives instead,
-    // counted as LIFETIME_MATCHED.
     float refitMatchedEvent(const Event& e, MatchedLifetimeSource& matched, Vec2f& flow, int& status,
-                            LifetimeScratch& scratch)
+                            LifetimeScratch& scratch) CV_OVERRIDE
     {
         return estimate(e, &matched, false, flow, status, scratch);
     }
@@ -96,7 +92,7 @@ public:
         insertEvent(e, lifetime, flow, own_);
     }
 
-    void insertEvent(const Event& e, float lifetime, const Vec2f& flow, LifetimeScratch& scratch)
+    void insertEvent(const Event& e, float lifetime, const Vec2f& flow, LifetimeScratch& scratch) CV_OVERRIDE
     {
         checkInside(e);
         const int p = e.p ? 1 : 0;
@@ -133,7 +129,7 @@ public:
             c = 0;
     }
 
-    void addCounts(LifetimeScratch& scratch)
+    void addStatusCounts(LifetimeScratch& scratch) CV_OVERRIDE
     {
         for (int s = 0; s < 4; s++)
         {
@@ -142,9 +138,8 @@ public:
         }
     }
 
-    // Rows above and below the event's that processEvent reads or writes: the fit's window, the predicted
-    // neighbour (one row).
-    int rowReach() const { return std::max(window_ / 2, 1); }
+    // The fit's window, and the predicted neighbour (one row).
+    int rowReach() const CV_OVERRIDE { return std::max(window_ / 2, 1); }
 
     double getStatusCount(int s) const CV_OVERRIDE
     {
@@ -525,44 +520,16 @@ private:
 
 }  // namespace
 
-float processEventInRows(LifetimeEstimator& estimator, const Event& e, Vec2f& flow, int& status, LifetimeScratch& scratch)
+Ptr<RowBandLifetimeEstimator> createRowBandLifetimeEstimator(Size sensorSize)
 {
-    return static_cast<LifetimeEstimatorImpl&>(estimator).processEvent(e, flow, status, scratch);
-}
-
-float refitMatchedEventInRows(LifetimeEstimator& estimator, const Event& e, MatchedLifetimeSource& matched,
-                              Vec2f& flow, int& status, LifetimeScratch& scratch)
-{
-    return static_cast<LifetimeEstimatorImpl&>(estimator).refitMatchedEvent(e, matched, flow, status, scratch);
-}
-
-float processMatchedEventInRows(LifetimeEstimator& estimator, const Event& e, const std::pair<float, Vec2f>& matched,
-                                Vec2f& flow, int& status, LifetimeScratch& scratch)
-{
-    return static_cast<LifetimeEstimatorImpl&>(estimator).processMatchedEvent(e, matched, flow, status, scratch);
-}
-
-void insertEventInRows(LifetimeEstimator& estimator, const Event& e, float lifetime, const Vec2f& flow,
-                       LifetimeScratch& scratch)
-{
-    static_cast<LifetimeEstimatorImpl&>(estimator).insertEvent(e, lifetime, flow, scratch);
-}
-
-void addStatusCounts(LifetimeEstimator& estimator, LifetimeScratch& scratch)
-{
-    static_cast<LifetimeEstimatorImpl&>(estimator).addCounts(scratch);
-}
-
-int lifetimeRowReach(const LifetimeEstimator& estimator)
-{
-    return static_cast<const LifetimeEstimatorImpl&>(estimator).rowReach();
+    return makePtr<LifetimeEstimatorImpl>(sensorSize);
 }
 
 }  // namespace detail
 
 Ptr<LifetimeEstimator> LifetimeEstimator::create(Size sensorSize)
 {
-    return makePtr<detail::LifetimeEstimatorImpl>(sensorSize);
+    return detail::createRowBandLifetimeEstimator(sensorSize);
 }
 
 }  // namespace event

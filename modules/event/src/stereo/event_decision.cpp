@@ -40,14 +40,14 @@ void StereoEventMatcherImpl::processAdmitted(const Event& e, Point r, int64 cold
     Event re = e;
     re.x = (short)r.x;
     re.y = (short)r.y;
-    LifetimeEstimator& estimator = *estimators_[c];
+    RowBandLifetimeEstimator& estimator = *estimators_[c];
 
     int status = -1;
     int lifetimeCopies = 0;  // of the lifetime this event ends with (0 unless it was passed on by a match)
     if (mode_ == STEREO_DECOUPLED)
     {
         const LifetimeTimer timer(timeLifetimes_, s.lifetimeTicks);
-        est.lifetime = processEventInRows(estimator, re, est.flow, status, s.lifetimes[c]);
+        est.lifetime = estimator.processEvent(re, est.flow, status, s.lifetimes[c]);
     }
     // The event takes part in its own descriptor while it is matched; its final activity follows below.
     activateUndecided(c, r, p, e.t);
@@ -83,7 +83,7 @@ void StereoEventMatcherImpl::processAdmitted(const Event& e, Point r, int64 cold
             {
                 est.lifetime = matched.first;
                 est.flow = matched.second;
-                insertEventInRows(estimator, re, est.lifetime, est.flow, s.lifetimes[c]);
+                estimator.insertEvent(re, est.lifetime, est.flow, s.lifetimes[c]);
                 status = LIFETIME_MATCHED;
             }
             else
@@ -91,18 +91,18 @@ void StereoEventMatcherImpl::processAdmitted(const Event& e, Point r, int64 cold
                 // Every event keeps its best disparity, noise included, and noise finds some candidate: below
                 // matchedLifetimeConfidence_ the event's own plane says whether it is noise before it takes the
                 // match's lifetime.
-                est.lifetime = processMatchedEventInRows(estimator, re, matched, est.flow, status, s.lifetimes[c]);
+                est.lifetime = estimator.processMatchedEvent(re, matched, est.flow, status, s.lifetimes[c]);
             }
         }
         else if (matchable && m.confidence >= matchedLifetimeConfidence_)
         {
             // The event's own plane first; only where it finds none the matched window's median (taken here if
-            // not above; an empty window leaves the event noise, as processEventInRows would).
-            est.lifetime = refitMatchedEventInRows(estimator, re, window, est.flow, status, s.lifetimes[c]);
+            // not above; an empty window leaves the event noise, as processEvent would).
+            est.lifetime = estimator.refitMatchedEvent(re, window, est.flow, status, s.lifetimes[c]);
             lifetimeCopies = window.copies + 1;
         }
         else
-            est.lifetime = processEventInRows(estimator, re, est.flow, status, s.lifetimes[c]);
+            est.lifetime = estimator.processEvent(re, est.flow, status, s.lifetimes[c]);
     }
 
     int64 activeFor = 0;

@@ -23,7 +23,7 @@ void StereoEventMatcherImpl::setSensorSize(Size s)
     if (s.width <= 0 || s.height <= 0 || s.width > 32768 || s.height > 32768)
         CV_Error_(Error::StsBadArg, ("StereoEventMatcher: sensor size %d x %d is not valid", s.width, s.height));
     size_ = s;
-    for (const Ptr<LifetimeEstimator>& est : estimators_)
+    for (const Ptr<RowBandLifetimeEstimator>& est : estimators_)
         est->setSensorSize(s);
     if (!calibration_.empty() && calibration_.imageSize != s)
     {
@@ -235,7 +235,7 @@ void StereoEventMatcherImpl::read(const FileNode& fn)
     setActiveDistance(num("activeDistance", activeDistance_));
     setNoiseActiveTime(num("noiseActiveTime", (double)noiseActiveTime_));
     if (!fn["lifetimeEstimator"].empty())
-        for (const Ptr<LifetimeEstimator>& est : estimators_)
+        for (const Ptr<RowBandLifetimeEstimator>& est : estimators_)
             est->read(fn["lifetimeEstimator"]);
     if (!fn["calibration"].empty())
     {
@@ -278,7 +278,7 @@ void StereoEventMatcherImpl::setDisparityRange(int lo, int hi)
 int StereoEventMatcherImpl::eventRowReach() const
 {
     return std::max({ aggregationWindow_ / 2, costWindow_ / 2, lifetimeWindow_ / 2, 1, (int)PRIOR_RADIUS,
-                      expiryRowReach(), lifetimeRowReach(*estimators_[0]), lifetimeRowReach(*estimators_[1]) });
+                      expiryRowReach(), estimators_[0]->rowReach(), estimators_[1]->rowReach() });
 }
 
 }  // namespace detail

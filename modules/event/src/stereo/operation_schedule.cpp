@@ -96,7 +96,7 @@ void StereoEventMatcherImpl::processOperations(const Mat_<Event>& ev, const Stor
             failure = std::current_exception();
         }
         for (int c = 0; c < 2; c++)
-            addStatusCounts(*estimators_[c], scratch_.lifetimes[c]);
+            estimators_[c]->addStatusCounts(scratch_.lifetimes[c]);
     }
     else
     {
@@ -143,7 +143,7 @@ void StereoEventMatcherImpl::processOperations(const Mat_<Event>& ev, const Stor
         }
         for (int b = 0; b < bands; b++)
             for (int c = 0; c < 2; c++)
-                addStatusCounts(*estimators_[c], bandScratch_[(size_t)b].lifetimes[c]);
+                estimators_[c]->addStatusCounts(bandScratch_[(size_t)b].lifetimes[c]);
     }
     if (failure)
     {

@@ -17,8 +17,8 @@ namespace detail {
 
 StereoEventMatcherImpl::StereoEventMatcherImpl(Size size, int mode)
 {
-    estimators_[0] = LifetimeEstimator::create(size);
-    estimators_[1] = LifetimeEstimator::create(size);
+    estimators_[0] = createRowBandLifetimeEstimator(size);
+    estimators_[1] = createRowBandLifetimeEstimator(size);
     checkMode(mode);
     mode_ = mode;
     setSensorSize(size);
@@ -107,7 +107,7 @@ void StereoEventMatcherImpl::processEvent(const Event& e, StereoEventEstimate& e
     maps_[0].expireUntil(e.t);
     maps_[1].expireUntil(e.t);
     processAdmitted(e, r, coldStartEnd_, false, scratch_, est);
-    addStatusCounts(*estimators_[e.camera], scratch_.lifetimes[e.camera]);
+    estimators_[e.camera]->addStatusCounts(scratch_.lifetimes[e.camera]);
 }
 
 void StereoEventMatcherImpl::reset()

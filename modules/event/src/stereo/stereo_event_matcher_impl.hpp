@@ -6,7 +6,7 @@
 #define OPENCV_EVENT_SRC_STEREO_STEREO_EVENT_MATCHER_IMPL_HPP
 
 #include "opencv2/event.hpp"
-#include "lifetime/lifetime_estimation_rows.hpp"
+#include "lifetime/row_band_lifetime_estimator.hpp"
 #include "stereo/active_estimate_map.hpp"
 #include "stereo/descriptor_cost.hpp"
 #include "stereo/frame_sgbm_matcher.hpp"
@@ -361,7 +361,7 @@ private:
     StereoCalibration calibration_;
     std::vector<int> lut_[2];  // raw pixel -> rectified pixel index (-1: outside); empty: no calibration
     double focalBaseline_ = 0;
-    Ptr<LifetimeEstimator> estimators_[2];
+    Ptr<RowBandLifetimeEstimator> estimators_[2];
     ZouDescriptorMap maps_[2];
     FrameSgbmMatcher frames_;
     ActiveEstimateMap estimates_[2];  // each event's own estimate, as its neighbours read it
