@@ -37,9 +37,18 @@ TEST(Event_ClockOffset, one_line_at_one_speed_cannot_tell_an_offset_from_a_dispa
 {
     // A vertical line moving at one speed: any offset shifts every disparity by one amount, as a depth would.
     double uncertainty = 0;
-    const double e = estimateClockOffset(sceneWithRightClock("moving_line", 5000, 1000000), Size(240, 180), 0, 40, &uncertainty);
+    const std::vector<Event> events = sceneWithRightClock("moving_line", 5000, 1000000);
+    const double e = estimateClockOffset(events, Size(240, 180), 0, 40, &uncertainty);
     EXPECT_GT(uncertainty, 1000);
     EXPECT_EQ(0, e) << "nothing to go by: no offset";
+    // Events a calibration rectified past the border are ignored: the same estimate.
+    std::vector<Event> withOutside = events;
+    withOutside.insert(withOutside.begin() + (long)events.size() / 2,
+                       { Event(events[events.size() / 2].t, 240, 9, 1, CAMERA_LEFT),
+                         Event(events[events.size() / 2].t, 3, -1, 0, CAMERA_RIGHT) });
+    double withOutsideUncertainty = 0;
+    EXPECT_EQ(e, estimateClockOffset(withOutside, Size(240, 180), 0, 40, &withOutsideUncertainty));
+    EXPECT_EQ(uncertainty, withOutsideUncertainty);
 }
 
 TEST(Event_ClockOffset, bad_arguments_are_refused_and_one_camera_gives_nothing)

@@ -273,7 +273,16 @@ double estimateClockOffset(InputArray events, Size sensorSize, int minDisparity,
                                      minDisparity, maxDisparity, sensorSize.width));
     Mat left, right;
     splitStereoEvents(events, left, right);
-    const std::vector<Event> l = toEventVector(left), r = toEventVector(right);
+    // Events outside the sensor (a calibration rectifies some past the border) are ignored, as the other
+    // estimates from a pair's events do: the matcher would refuse them.
+    auto inside = [&](const Mat& events) {
+        std::vector<Event> kept;
+        for (const Event& e : toEventVector(events))
+            if (e.x >= 0 && e.y >= 0 && e.x < sensorSize.width && e.y < sensorSize.height)
+                kept.push_back(e);
+        return kept;
+    };
+    const std::vector<Event> l = inside(left), r = inside(right);
     if (uncertaintyUs)
         *uncertaintyUs = std::numeric_limits<double>::infinity();
     if (l.empty() || r.empty())

@@ -132,7 +132,8 @@ follows the restamping, where it would lie at the +-20 ms end, and where it foll
 half as much as a clock would) and the matches at the estimate are less clear-cut (mean confidence) than with
 the clocks as given.
 @param events stereo events (camera column), time-ordered and rectified, any form getEventMat() accepts; a few
-seconds of a recording with motion is enough (the events are matched up to five times).
+seconds of a recording with motion is enough (the events are matched up to five times). Events outside the
+sensor are ignored.
 @param sensorSize the sensor size.
 @param minDisparity, maxDisparity the disparity range searched.
 @param uncertaintyUs optional output: the standard error of the offset [us] (clustered by block and ten
