@@ -153,7 +153,7 @@ still lines up. The left slices are compared with the right ones moved by every 
 normalised correlation over all slices at once. A normal pair peaks at a positive d (a point appears further
 left in the right camera); a peak at a negative d means the right camera sees the scene to the right of the
 left one: the cameras are exchanged (or the pair is not left-right). The work grows with the events and the
-disparity range, not with the sensor's area: 2 s of a DAVIS240 scene take a few hundredths of a second.
+disparity range, not with the sensor's area.
 @param events stereo events (camera column), time-ordered, any form getEventMat() accepts; events outside the
 sensor or of other cameras are ignored.
 @param sensorSize the sensor size.

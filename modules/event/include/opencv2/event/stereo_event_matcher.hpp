@@ -342,12 +342,11 @@ public:
     An event (or the end of an event's activity) close enough to a neighbouring band to touch data that
     band's events touch waits until that band has processed its earlier events in the rows it could touch
     and its earlier ends of activity near the boundary, so the results are identical to one thread's, bit
-    for bit. Two events can touch the same data when they
-    are at most 19 rows apart at the defaults (half the aggregation window read, plus the rows an activation
-    writes); bands are taller than that, which caps the threads on small sensors (9 on a DAVIS240 at the
-    defaults); packets of fewer than 1000 events run on one thread. More threads than the machine's cores is slower: a band
-    whose thread is not running holds its neighbours back. processEvent() always runs on the calling thread.
-    Not stored by write(). */
+    for bit. Two events can touch the same data when they are at most 19 rows apart at the defaults (half the
+    aggregation window read, plus the rows an activation writes); bands are taller than that, which caps the
+    threads on small sensors (9 on a DAVIS240 at the defaults); packets of fewer than 1000 events run on one
+    thread. More threads than the machine's cores is slower: a band whose thread is not running holds its
+    neighbours back. processEvent() always runs on the calling thread. Not stored by write(). */
     CV_WRAP virtual int getNumThreads() const = 0;
     CV_WRAP virtual void setNumThreads(int threads) = 0;
 
