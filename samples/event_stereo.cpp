@@ -40,7 +40,6 @@
 #include <cstdlib>
 #include <fstream>
 #include <iostream>
-#include <memory>
 #include <sstream>
 
 using namespace cv;
@@ -231,9 +230,13 @@ int main(int argc, char** argv)
                 if (source.hasTruth() && e.camera == CAMERA_LEFT && !((int)truth.at<float>((int)i, GT_FLAGS) & GT_FLAG_NOISE))
                     truthDisparity.at<float>(e.y, e.x) = truth.at<float>((int)i, GT_DISPARITY);
                 if (csv.is_open())
-                    csv << cv::format("%lld,%d,%d,%d,%d,%.2f,%.4f,%.0f,%d,%.3f\n", (long long)e.t, e.x, e.y, e.p, e.camera,
-                                      disparity.at<float>((int)i), depth.at<float>((int)i), lifetime.at<float>((int)i),
-                                      flags.at<int>((int)i), confidence.at<float>((int)i));
+                {
+                    char line[160];  // one per event: no allocation
+                    std::snprintf(line, sizeof(line), "%lld,%d,%d,%d,%d,%.2f,%.4f,%.0f,%d,%.3f\n", (long long)e.t, e.x,
+                                  e.y, e.p, e.camera, disparity.at<float>((int)i), depth.at<float>((int)i),
+                                  lifetime.at<float>((int)i), flags.at<int>((int)i), confidence.at<float>((int)i));
+                    csv << line;
+                }
             }
 
             const Mat picture = sampleEnlarge(stereoWindowPicture(matcher, windowEnd - 1, truthDisparity, opt.minDisparity, opt.maxDisparity), zoom);

@@ -70,6 +70,9 @@ TEST(Event_StereoPairCheck, streams_that_do_not_overlap_or_too_few_events_estima
     EXPECT_FALSE(silent.overlap);
     EXPECT_LT(silent.rightEvents * 100, silent.leftEvents);
     EXPECT_FALSE(silent.lineUpEstimated || silent.rowsEstimated);
+    const StereoPairCheck none = checkStereoPair(std::vector<Event>(), kSensor, 0, 40);
+    EXPECT_EQ(0.0, none.leftEvents + none.rightEvents + none.spanUs);
+    EXPECT_FALSE(none.overlap || none.lineUpEstimated || none.rowsEstimated);
     const std::vector<Event> few(ev.begin(), ev.begin() + 1999);
     const StereoPairCheck small = checkStereoPair(few, kSensor, 0, 40);
     EXPECT_EQ(1999.0, small.leftEvents + small.rightEvents);
