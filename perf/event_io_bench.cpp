@@ -8,7 +8,7 @@
 // /proc/self/clear_refs), which must not grow with N: the readers stream.
 
 #include "resident_memory.hpp"
-#include "sample_command_line.hpp"
+#include "command_line.hpp"
 
 #include <opencv2/event.hpp>
 
@@ -69,7 +69,7 @@ int main(int argc, char** argv)
     std::string shared, tmp;
     try
     {
-        SampleCommandLine cmd(argc, argv, keys, "Reading and writing speed and memory of every recording format.");
+        ProgramCommandLine cmd(argc, argv, keys, "Reading and writing speed and memory of every recording format.");
         if (cmd.helpShown())
             return 0;
         n = (int64)cmd.get<double>("events");

@@ -22,8 +22,8 @@
 // shifted on every pass) and prints the resident memory at every tenth: it stays flat.
 
 #include "resident_memory.hpp"
-#include "sample_algorithm_settings.hpp"
-#include "sample_command_line.hpp"
+#include "algorithm_settings.hpp"
+#include "command_line.hpp"
 
 #include <opencv2/event.hpp>
 
@@ -296,7 +296,7 @@ int main(int argc, char** argv)
     int sensorModel = SENSOR_DAVIS240;
     try
     {
-        SampleCommandLine cmd(argc, argv, keys,
+        ProgramCommandLine cmd(argc, argv, keys,
                               "The paper's Table I and the matcher's speed, latency, memory and row-band scaling.");
         if (cmd.helpShown())
             return 0;

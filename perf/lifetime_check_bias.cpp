@@ -8,7 +8,7 @@
 // one real-sensor effect back at a time. A check without bias would give a median of 1 and a narrow spread
 // everywhere; what it gives is what an estimator can at best score on recordings of that kind.
 
-#include "sample_command_line.hpp"
+#include "command_line.hpp"
 
 #include <opencv2/event.hpp>
 
@@ -92,7 +92,7 @@ int main(int argc, char** argv)
             "{help h      | false                   | print this message}"
             "{scenes      | boxes,walking,boxes_pair | simulator scenes, comma separated}"
             "{duration-ms | 1000                    | simulated time per row [ms]}";
-        SampleCommandLine cmd(argc, argv, keys, "What LifetimeArrivalCheck says of the simulator's true lifetimes.");
+        ProgramCommandLine cmd(argc, argv, keys, "What LifetimeArrivalCheck says of the simulator's true lifetimes.");
         if (cmd.helpShown())
             return 0;
         const double durationUs = cmd.get<double>("duration-ms") * 1000;

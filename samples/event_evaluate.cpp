@@ -25,8 +25,8 @@
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
-#include "sample_command_line.hpp"
-#include "sample_algorithm_settings.hpp"
+#include "command_line.hpp"
+#include "algorithm_settings.hpp"
 #include "sample_evaluation.hpp"
 #include "sample_evaluation_pictures.hpp"
 #include "sample_evaluation_report.hpp"
@@ -104,7 +104,7 @@ int main(int argc, char** argv)
     Options o;
     try
     {
-        SampleCommandLine cmd(argc, argv, keys,
+        ProgramCommandLine cmd(argc, argv, keys,
                               "Runs a stereo method on a recording with per-event ground truth and writes a report.");
         if (cmd.helpShown())
             return 0;

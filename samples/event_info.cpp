@@ -14,7 +14,7 @@
 
 #include <opencv2/event.hpp>
 
-#include "sample_command_line.hpp"
+#include "command_line.hpp"
 #include "sample_recording_info.hpp"
 
 #include <algorithm>
@@ -200,7 +200,7 @@ int main(int argc, char** argv)
     std::vector<std::string> files, scenes;
     try
     {
-        SampleCommandLine cmd(argc, argv, keys,
+        ProgramCommandLine cmd(argc, argv, keys,
                               "What is in an event recording: format, sensor, events, time span, rejected events.",
                               true);
         if (cmd.helpShown())

@@ -16,8 +16,8 @@
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
-#include "sample_algorithm_settings.hpp"
-#include "sample_command_line.hpp"
+#include "algorithm_settings.hpp"
+#include "command_line.hpp"
 #include "sample_pictures.hpp"
 #include "sample_progress.hpp"
 
@@ -51,7 +51,7 @@ int main(int argc, char** argv)
 {
     try
     {
-        SampleCommandLine cmd(argc, argv, keys,
+        ProgramCommandLine cmd(argc, argv, keys,
                               "Per-event lifetime and normal flow of a recording, with pictures of the active events.");
         if (cmd.helpShown())
             return 0;

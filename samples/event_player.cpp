@@ -16,8 +16,8 @@
 #include <opencv2/imgproc.hpp>
 #include <opencv2/videoio.hpp>
 
-#include "sample_algorithm_settings.hpp"
-#include "sample_command_line.hpp"
+#include "algorithm_settings.hpp"
+#include "command_line.hpp"
 #include "sample_pictures.hpp"
 #include "sample_progress.hpp"
 
@@ -79,7 +79,7 @@ const char* const keys =
 
 bool parse(int argc, char** argv, Options& o)
 {
-    SampleCommandLine cmd(argc, argv, keys,
+    ProgramCommandLine cmd(argc, argv, keys,
                           "Plays an event recording as time surfaces or event-count frames.");
     if (cmd.helpShown())
         return false;

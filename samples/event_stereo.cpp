@@ -25,8 +25,8 @@
 #include <opencv2/imgproc.hpp>
 #include <opencv2/videoio.hpp>
 
-#include "sample_command_line.hpp"
-#include "sample_algorithm_settings.hpp"
+#include "command_line.hpp"
+#include "algorithm_settings.hpp"
 #include "sample_pictures.hpp"
 #include "sample_progress.hpp"
 #include "sample_stereo_pair.hpp"
@@ -89,7 +89,7 @@ const char* const keys =
 
 bool parse(int argc, char** argv, Options& o)
 {
-    SampleCommandLine cmd(argc, argv, keys,
+    ProgramCommandLine cmd(argc, argv, keys,
                           "Per-event stereo disparity, depth and lifetime of a stereo recording, a live DAVIS pair "
                           "or a simulated scene.");
     if (cmd.helpShown())

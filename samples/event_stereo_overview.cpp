@@ -14,7 +14,7 @@
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
-#include "sample_command_line.hpp"
+#include "command_line.hpp"
 #include "sample_pictures.hpp"
 #include "sample_progress.hpp"
 #include "sample_stereo_pair.hpp"
@@ -54,7 +54,7 @@ const char* const keys =
 
 bool parse(int argc, char** argv, Options& o)
 {
-    SampleCommandLine cmd(argc, argv, keys,
+    ProgramCommandLine cmd(argc, argv, keys,
                           "Overview of a stereo recording: time surfaces, event counts and the dominant disparity.");
     if (cmd.helpShown())
         return false;

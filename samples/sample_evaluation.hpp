@@ -6,7 +6,7 @@
 
 #include <opencv2/event.hpp>
 
-#include "sample_algorithm_settings.hpp"
+#include "algorithm_settings.hpp"
 
 #include <algorithm>
 #include <array>

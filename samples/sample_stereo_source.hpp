@@ -6,7 +6,7 @@
 
 #include <opencv2/event.hpp>
 
-#include "sample_command_line.hpp"
+#include "command_line.hpp"
 
 #include <algorithm>
 #include <stdexcept>

@@ -3,13 +3,13 @@
 //
 // The syntax is CommandLineParser's: --key=value for options, --flag for switches, plain words for positional
 // arguments, --help for the generated usage. CommandLineParser itself ignores a key it does not know and reads
-// "--left FILE" as the switch --left=true followed by a positional FILE; SampleCommandLine refuses both, with
+// "--left FILE" as the switch --left=true followed by a positional FILE; ProgramCommandLine refuses both, with
 // a message saying what to write instead, so that a typo never runs with a default silently.
 //
 // Conventions of the keys string: a switch has the default "false"; every other key takes a value.
 
-#ifndef OPENCV_EVENT_SAMPLES_SAMPLE_COMMAND_LINE_HPP
-#define OPENCV_EVENT_SAMPLES_SAMPLE_COMMAND_LINE_HPP
+#ifndef OPENCV_EVENT_COMMON_COMMAND_LINE_HPP
+#define OPENCV_EVENT_COMMON_COMMAND_LINE_HPP
 
 #include <opencv2/core/utility.hpp>
 
@@ -88,13 +88,13 @@ inline std::vector<std::pair<std::string, std::string>> parseNameValueList(const
     return out;
 }
 
-class SampleCommandLine
+class ProgramCommandLine
 {
 public:
     /** Parses @p argv against @p keys (CommandLineParser syntax). @p extraPositionals: plain words beyond the
         declared @-keys are kept (positionals()) instead of refused. Throws std::runtime_error on an unknown
         key, a value key without "=value", a switch given a value other than true/false, or a surplus word. */
-    SampleCommandLine(int argc, const char* const argv[], const std::string& keys, const std::string& about,
+    ProgramCommandLine(int argc, const char* const argv[], const std::string& keys, const std::string& about,
                       bool extraPositionals = false)
         : parser_(argc, argv, keys)
     {

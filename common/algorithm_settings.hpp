@@ -2,12 +2,12 @@
 // LifetimeEstimator or a noise filter by the names its write() stores (uniquenessRatio, costWindow,
 // lifetimeEstimator.inlierDistance, correlationTime, ...), applied through read().
 
-#ifndef OPENCV_EVENT_SAMPLES_SAMPLE_ALGORITHM_SETTINGS_HPP
-#define OPENCV_EVENT_SAMPLES_SAMPLE_ALGORITHM_SETTINGS_HPP
+#ifndef OPENCV_EVENT_COMMON_ALGORITHM_SETTINGS_HPP
+#define OPENCV_EVENT_COMMON_ALGORITHM_SETTINGS_HPP
 
 #include <opencv2/event.hpp>
 
-#include "sample_command_line.hpp"
+#include "command_line.hpp"
 
 #include <map>
 #include <set>
