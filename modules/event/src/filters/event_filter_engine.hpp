@@ -7,6 +7,7 @@
 
 #include "opencv2/event/event_filter.hpp"
 #include "common/timestamp_math.hpp"
+#include "common/sensor_bounds.hpp"
 
 #include <limits>
 #include <vector>
@@ -119,7 +120,7 @@ protected:
                 CV_Error_(Error::StsBadArg, ("%s: event #%d (t=%lld us, x=%d, y=%d) has camera %d; expected "
                                              "CAMERA_LEFT (0) or CAMERA_RIGHT (1)", this->getDefaultName().c_str(), i,
                                              (long long)ev.t, ev.x, ev.y, ev.camera));
-            if ((unsigned)ev.x >= (unsigned)size_.width || (unsigned)ev.y >= (unsigned)size_.height)
+            if (!onSensor(ev.x, ev.y, size_))
                 CV_Error_(Error::StsOutOfRange, ("%s: event #%d at (x=%d, y=%d), t=%lld us, camera %d, is outside "
                                                  "the %d x %d sensor", this->getDefaultName().c_str(), i, ev.x, ev.y, (long long)ev.t,
                                                  ev.camera, size_.width, size_.height));

@@ -8,6 +8,7 @@
 #include "precomp.hpp"
 #include "io/event_reader.hpp"
 #include "io/file_input.hpp"
+#include "common/sensor_bounds.hpp"
 
 namespace cv {
 namespace event {
@@ -347,7 +348,7 @@ public:
         for (const Event& e0 : raw)
         {
             Event e = e0;
-            if (bounded ? ((unsigned)e.x >= (unsigned)sensor.width || (unsigned)e.y >= (unsigned)sensor.height)
+            if (bounded ? !onSensor(e.x, e.y, sensor)
                         : (e.x < 0 || e.y < 0))
             {
                 rejectedOutside++;

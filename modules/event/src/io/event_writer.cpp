@@ -9,6 +9,7 @@
 #include "precomp.hpp"
 #include "io/aedat4_codec.hpp"
 #include "io/file_input.hpp"
+#include "common/sensor_bounds.hpp"
 
 #include <cerrno>
 #include <charconv>
@@ -175,7 +176,7 @@ public:
         for (int i = 0; i < (int)ev.total(); i++)
         {
             const Event& e = ev(i);
-            if ((unsigned)e.x >= (unsigned)size.width || (unsigned)e.y >= (unsigned)size.height)
+            if (!onSensor(e.x, e.y, size))
                 CV_Error_(Error::StsOutOfRange, ("%s: event (x=%d, y=%d, t=%lld) is outside the %d x %d sensor",
                                                  path.c_str(), e.x, e.y, (long long)e.t, size.width, size.height));
             const int c = e.camera;

@@ -4,6 +4,7 @@
 
 #include "precomp.hpp"
 #include "common/timestamp_math.hpp"
+#include "common/sensor_bounds.hpp"
 
 #include <limits>
 
@@ -172,7 +173,7 @@ private:
     // Inside the sensor, and not at INT64_MIN, which is NO_EVENT: stored, it would make the pixel look empty.
     bool inside(const Event& e) const
     {
-        return (unsigned)e.x < (unsigned)size_.width && (unsigned)e.y < (unsigned)size_.height && e.t != NO_EVENT;
+        return onSensor(e.x, e.y, size_) && e.t != NO_EVENT;
     }
 
     void outOfRange(const Event& e, int index) const
@@ -186,7 +187,7 @@ private:
 
     void checkPixel(int x, int y) const
     {
-        if ((unsigned)x >= (unsigned)size_.width || (unsigned)y >= (unsigned)size_.height)
+        if (!onSensor(x, y, size_))
             CV_Error_(Error::StsOutOfRange, ("EventSurface: pixel (%d, %d) is outside the %d x %d sensor", x, y,
                                              size_.width, size_.height));
     }

@@ -10,6 +10,7 @@
 #include "lifetime/neighbour_along_motion.hpp"
 #include "lifetime/plane_inliers.hpp"
 #include "common/timestamp_math.hpp"
+#include "common/sensor_bounds.hpp"
 
 #include <Eigen/Dense>
 
@@ -313,7 +314,7 @@ private:
 
     void checkInside(const Event& e) const
     {
-        if ((unsigned)e.x >= (unsigned)size_.width || (unsigned)e.y >= (unsigned)size_.height)
+        if (!onSensor(e.x, e.y, size_))
             CV_Error_(Error::StsOutOfRange, ("LifetimeEstimator: event at (x=%d, y=%d), t=%lld us, is outside the "
                                              "%d x %d sensor", e.x, e.y, (long long)e.t, size_.width, size_.height));
         if (e.t == EventSurface::NO_EVENT)

@@ -6,6 +6,7 @@
 // with the speed of the edge along the row on one surface.
 
 #include "precomp.hpp"
+#include "common/sensor_bounds.hpp"
 
 #include <limits>
 #include <map>
@@ -278,7 +279,7 @@ double estimateClockOffset(InputArray events, Size sensorSize, int minDisparity,
     auto inside = [&](const Mat& events) {
         std::vector<Event> kept;
         for (const Event& e : toEventVector(events))
-            if (e.x >= 0 && e.y >= 0 && e.x < sensorSize.width && e.y < sensorSize.height)
+            if (detail::onSensor(e.x, e.y, sensorSize))
                 kept.push_back(e);
         return kept;
     };

@@ -6,6 +6,7 @@
 
 #include "precomp.hpp"
 #include "opencv2/imgproc.hpp"
+#include "common/sensor_bounds.hpp"
 
 #include <cmath>
 #include <limits>
@@ -148,7 +149,7 @@ int estimateDominantDisparity(InputArray events, Size sensorSize, int maxDispari
             CV_Error_(Error::StsBadArg, ("estimateDominantDisparity: event #%d at (x=%d, y=%d), t=%lld us, goes "
                                          "back in time (previous event at %lld us)", i, e.x, e.y, (long long)e.t,
                                          (long long)ev(i - 1).t));
-        if ((unsigned)e.x >= (unsigned)sensorSize.width || (unsigned)e.y >= (unsigned)sensorSize.height || e.camera > 1)
+        if (!detail::onSensor(e.x, e.y, sensorSize) || e.camera > 1)
             continue;
         if (sliceEnd == std::numeric_limits<int64>::min() || e.t >= sliceEnd)
         {

@@ -9,6 +9,7 @@
 #include "precomp.hpp"
 #include "common/timestamp_math.hpp"
 #include "stereo/stereo_event_matcher_impl.hpp"
+#include "common/sensor_bounds.hpp"
 
 namespace cv {
 namespace event {
@@ -182,7 +183,7 @@ Point StereoEventMatcherImpl::admit(const Event& e)
     if (e.camera > 1)
         CV_Error_(Error::StsBadArg, ("StereoEventMatcher: event (t=%lld us, x=%d, y=%d) has camera %d; a stereo "
                                      "stream has CAMERA_LEFT (0) and CAMERA_RIGHT (1)", (long long)e.t, e.x, e.y, e.camera));
-    if ((unsigned)e.x >= (unsigned)size_.width || (unsigned)e.y >= (unsigned)size_.height)
+    if (!onSensor(e.x, e.y, size_))
         CV_Error_(Error::StsOutOfRange, ("StereoEventMatcher: event at (x=%d, y=%d), t=%lld us, camera %d, is outside "
                                          "the %d x %d sensor", e.x, e.y, (long long)e.t, e.camera, size_.width, size_.height));
     if (e.t == EventSurface::NO_EVENT)

@@ -5,6 +5,7 @@
 // estimateRowAlignment(): the pair's residual row offset and roll, from event-count images.
 
 #include "precomp.hpp"
+#include "common/sensor_bounds.hpp"
 
 namespace cv {
 namespace event {
@@ -80,7 +81,7 @@ Vec2d estimateRowAlignment(InputArray events, Size sensorSize, int minDisparity,
     Mat_<Event> ev = getEventMat(events);
     Mat counts[2] = { Mat::zeros(sensorSize, CV_32F), Mat::zeros(sensorSize, CV_32F) };
     for (const Event& e : ev)
-        if ((unsigned)e.x < (unsigned)sensorSize.width && (unsigned)e.y < (unsigned)sensorSize.height && e.camera <= 1)
+        if (detail::onSensor(e.x, e.y, sensorSize) && e.camera <= 1)
             counts[e.camera].at<float>(e.y, e.x) += 1;
     // Three strips of the left image, each a third wide, placed so that every disparity finds its strip in
     // the right image: the search runs x - d, so the strips start at maxDisparity.
