@@ -562,6 +562,12 @@ TEST(StereoEventMatcher, parameters_round_trip_through_FileStorage)
     EXPECT_EQ(b->getNoiseActiveTime(), 4000);
     EXPECT_EQ(b->getLifetimeEstimator(1)->getWindowSize(), 7);
     EXPECT_DOUBLE_EQ(b->getCalibration().baseline(), 0.2);
+
+    // A file with one value out of range changes nothing, not even the valid values before it.
+    const std::string bad = "%YAML:1.0\ncostWindow: 5\nuniquenessRatio: 500\n";
+    EXPECT_THROW(b->read(FileStorage(bad, FileStorage::READ | FileStorage::MEMORY).root()), cv::Exception);
+    EXPECT_EQ(b->getCostWindow(), 7);
+    EXPECT_EQ(b->getUniquenessRatio(), 30);
 }
 
 // Runs the events through processEvent() and returns the last left event with a disparity (and that disparity);

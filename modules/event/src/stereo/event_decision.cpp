@@ -45,7 +45,7 @@ void StereoEventMatcherImpl::processAdmitted(const Event& e, Point r, int64 cold
 
     int status = -1;
     int lifetimeCopies = 0;  // of the lifetime this event ends with (0 unless it was passed on by a match)
-    if (mode_ == STEREO_DECOUPLED)
+    if (params_.mode == STEREO_DECOUPLED)
     {
         const LifetimeTimer timer(timeLifetimes_, s.lifetimeTicks);
         est.lifetime = estimator.processEvent(re, est.flow, status, s.lifetimes[c]);
@@ -61,12 +61,12 @@ void StereoEventMatcherImpl::processAdmitted(const Event& e, Point r, int64 cold
     est.confidence = m.confidence;
     if (m.disparity >= 0)
     {
-        if (m.confidence >= minConfidence_)
+        if (m.confidence >= params_.minConfidence)
             est.disparity = m.disparity;
         else
             est.flags |= STEREO_AMBIGUOUS;
     }
-    if (mode_ == STEREO_COUPLED)
+    if (params_.mode == STEREO_COUPLED)
     {
         const LifetimeTimer timer(timeLifetimes_, s.lifetimeTicks);
         // The other sensor's matched window, whose median is taken only where it is used.
@@ -74,13 +74,13 @@ void StereoEventMatcherImpl::processAdmitted(const Event& e, Point r, int64 cold
         const bool matchable = est.disparity >= 0 && m.counterpartX >= 0;
         // A lifetime copied back and forth between the sensors is never refitted while the edge changes speed (a
         // swinging limb): past maxLifetimeCopies copies the event fits its own plane first, as it does after a
-        // match less confident than lifetimeCopyConfidence_ (most often a wrong one).
+        // match less confident than params_.lifetimeCopyConfidence (most often a wrong one).
         std::pair<float, Vec2f> matched;
-        if (matchable && !(m.confidence < lifetimeCopyConfidence_) && window.get(matched)
-            && window.copies < maxLifetimeCopies_)
+        if (matchable && !(m.confidence < params_.lifetimeCopyConfidence) && window.get(matched)
+            && window.copies < params_.maxLifetimeCopies)
         {
             lifetimeCopies = window.copies + 1;
-            if (m.confidence >= matchedLifetimeConfidence_)
+            if (m.confidence >= params_.matchedLifetimeConfidence)
             {
                 est.lifetime = matched.first;
                 est.flow = matched.second;
@@ -90,12 +90,12 @@ void StereoEventMatcherImpl::processAdmitted(const Event& e, Point r, int64 cold
             else
             {
                 // Every event keeps its best disparity, noise included, and noise finds some candidate: below
-                // matchedLifetimeConfidence_ the event's own plane says whether it is noise before it takes the
+                // params_.matchedLifetimeConfidence the event's own plane says whether it is noise before it takes the
                 // match's lifetime.
                 est.lifetime = estimator.processMatchedEvent(re, matched, est.flow, status, s.lifetimes[c]);
             }
         }
-        else if (matchable && m.confidence >= matchedLifetimeConfidence_)
+        else if (matchable && m.confidence >= params_.matchedLifetimeConfidence)
         {
             // The event's own plane first; only where it finds none the matched window's median (taken here if
             // not above; an empty window leaves the event noise, as processEvent would).
@@ -108,8 +108,8 @@ void StereoEventMatcherImpl::processAdmitted(const Event& e, Point r, int64 cold
 
     int64 activeFor = 0;
     bool noiseActive = false;
-    if (mode_ == STEREO_FIXED_INTERVAL)
-        activeFor = fixedInterval_;
+    if (params_.mode == STEREO_FIXED_INTERVAL)
+        activeFor = params_.fixedInterval;
     else if (est.lifetime > 0)
         activeFor = activeSpan(est.lifetime);
     else if (e.t < coldStartEnd)
@@ -119,12 +119,12 @@ void StereoEventMatcherImpl::processAdmitted(const Event& e, Point r, int64 cold
         // them neither sensor has anything active to match against. Such an event gets no lifetime of its
         // own but stays visible to matching as if its lifetime were the fixed interval (FIXED_INTERVAL's
         // activity, which needs no history).
-        activeFor = activeSpan(fixedInterval_);
+        activeFor = activeSpan(params_.fixedInterval);
     }
     else
     {
         // No plane: on a weak edge, where only some pixels fire, often the edge's own event (setNoiseActiveTime).
-        activeFor = noiseActiveTime_;
+        activeFor = params_.noiseActiveTime;
         noiseActive = true;
     }
     // A later event of this pixel and polarity, already in the map (look-ahead), keeps it active until its
@@ -140,7 +140,7 @@ void StereoEventMatcherImpl::processAdmitted(const Event& e, Point r, int64 cold
 
     // The neighbours read each event's own estimate (remember below); the output is averaged.
     const float ownDisparity = est.disparity;
-    if (ownDisparity >= 0 && averagingRadius_ > 0)
+    if (ownDisparity >= 0 && params_.averagingRadius > 0)
         est.disparity = averagedDisparity(c, r, e.t, ownDisparity, m.counterpartX);
     if (est.disparity >= 0)
     {
@@ -174,7 +174,7 @@ void StereoEventMatcherImpl::activateUndecided(int c, Point r, int p, int64 t)
 
 int64 StereoEventMatcherImpl::activeSpan(double lifetime) const
 {
-    const double span = std::min(lifetime * activeDistance_, (double)maxLifetime_);
+    const double span = std::min(lifetime * params_.activeDistance, (double)params_.maxLifetime);
     return std::max<int64>(1, (int64)std::llround(span));
 }
 
@@ -183,9 +183,9 @@ Point StereoEventMatcherImpl::admit(const Event& e)
     if (e.camera > 1)
         CV_Error_(Error::StsBadArg, ("StereoEventMatcher: event (t=%lld us, x=%d, y=%d) has camera %d; a stereo "
                                      "stream has CAMERA_LEFT (0) and CAMERA_RIGHT (1)", (long long)e.t, e.x, e.y, e.camera));
-    if (!onSensor(e.x, e.y, size_))
+    if (!onSensor(e.x, e.y, params_.sensorSize))
         CV_Error_(Error::StsOutOfRange, ("StereoEventMatcher: event at (x=%d, y=%d), t=%lld us, camera %d, is outside "
-                                         "the %d x %d sensor", e.x, e.y, (long long)e.t, e.camera, size_.width, size_.height));
+                                         "the %d x %d sensor", e.x, e.y, (long long)e.t, e.camera, params_.sensorSize.width, params_.sensorSize.height));
     if (e.t == EventSurface::NO_EVENT)
         CV_Error_(Error::StsOutOfRange, ("StereoEventMatcher: event (x=%d, y=%d, camera %d) has t = INT64_MIN, which is "
                                          "reserved for EventSurface::NO_EVENT", e.x, e.y, e.camera));
@@ -202,8 +202,8 @@ Point StereoEventMatcherImpl::admit(const Event& e)
     lastTime_ = e.t;
     if (lut_[e.camera].empty())
         return Point(e.x, e.y);
-    const int r = lut_[e.camera][(size_t)e.y * size_.width + e.x];
-    return r < 0 ? Point(-1, -1) : Point(r % size_.width, r / size_.width);
+    const int r = lut_[e.camera][(size_t)e.y * params_.sensorSize.width + e.x];
+    return r < 0 ? Point(-1, -1) : Point(r % params_.sensorSize.width, r / params_.sensorSize.width);
 }
 
 }  // namespace detail

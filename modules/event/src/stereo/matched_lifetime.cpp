@@ -14,13 +14,13 @@ namespace detail {
 
 Rect StereoEventMatcherImpl::lifetimeWindowAround(int x, int y) const
 {
-    const int h = lifetimeWindow_ / 2;
-    return Rect(Point(x - h, y - h), Point(x + h + 1, y + h + 1)) & Rect(Point(), size_);
+    const int h = params_.lifetimeWindow / 2;
+    return Rect(Point(x - h, y - h), Point(x + h + 1, y + h + 1)) & Rect(Point(), params_.sensorSize);
 }
 
 void StereoEventMatcherImpl::prefetchMatchedWindow(int c, int x, int y, int p) const
 {
-    if (mode_ != STEREO_COUPLED)
+    if (params_.mode != STEREO_COUPLED)
         return;
     const Rect w = lifetimeWindowAround(x, y);
     maps_[c].prefetchLifetimes(w.x, w.x + w.width - 1, w.y, w.y + w.height - 1, p);

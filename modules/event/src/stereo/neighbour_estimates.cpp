@@ -28,7 +28,7 @@ inline float agreeingShare(const std::vector<float>& disparities, float median)
 
 // The temporal prior (see match()): this sensor's still active estimates within PRIOR_RADIUS rows and `columns`
 // columns of r, at least PRIOR_SUPPORT of them. Their median is the prior; the cheapest candidate within a pixel
-// of it wins when its cost is within priorTolerance_ % of the best's, with the share of those estimates that
+// of it wins when its cost is within params_.priorTolerance % of the best's, with the share of those estimates that
 // agree with the median within a pixel as its confidence. Edges move across the sensor a pixel at a time: what their events
 // were matched to a moment ago, nearby, is most often what the next one should be matched to.
 bool StereoEventMatcherImpl::decideByPrior(int c, Point r, int p, int64 t, int columns, const unsigned* score, unsigned bestCost, MatchScratch& s,
@@ -41,11 +41,11 @@ bool StereoEventMatcherImpl::decideByPrior(int c, Point r, int p, int64 t, int c
     const int* const candidates = s.candidates.data();
     int chosen = -1;
     for (int i = 0; i < s.count; i++)
-        if (std::abs((float)(minDisparity_ + candidates[i]) - prior) <= 1.f && (chosen < 0 || score[i] < score[chosen]))
+        if (std::abs((float)(params_.minDisparity + candidates[i]) - prior) <= 1.f && (chosen < 0 || score[i] < score[chosen]))
             chosen = i;
-    if (chosen < 0 || (uint64)score[chosen] * 100 > (uint64)bestCost * (uint64)(100 + priorTolerance_))
+    if (chosen < 0 || (uint64)score[chosen] * 100 > (uint64)bestCost * (uint64)(100 + params_.priorTolerance))
         return false;
-    const int d = minDisparity_ + candidates[chosen];
+    const int d = params_.minDisparity + candidates[chosen];
     m.disparity = (float)d;
     m.counterpartX = r.x + (c == CAMERA_LEFT ? -d : d);
     m.confidence = agreeingShare(s.disparities, prior);  // before consistent() below refills s.disparities
@@ -67,8 +67,8 @@ int StereoEventMatcherImpl::priorColumnReach(int c, Point r) const
     const ZouDescriptorMap& map = maps_[c];
     float across = 0, along = 0;  // |flow x|, |flow y| summed
     for (int p = 0; p < 2; p++)
-        for (int y = std::max(0, r.y - 1); y <= std::min(size_.height - 1, r.y + 1); y++)
-            for (int x = std::max(0, r.x - 1); x <= std::min(size_.width - 1, r.x + 1); x++)
+        for (int y = std::max(0, r.y - 1); y <= std::min(params_.sensorSize.height - 1, r.y + 1); y++)
+            for (int x = std::max(0, r.x - 1); x <= std::min(params_.sensorSize.width - 1, r.x + 1); x++)
                 if (map.isActive(x, y, p))
                 {
                     const Vec2f f = map.flow(x, y, p);
@@ -85,9 +85,9 @@ int StereoEventMatcherImpl::priorColumnReach(int c, Point r) const
 // the object both cameras see; its estimate counts for the next events nearer the border.
 bool StereoEventMatcherImpl::estimateBeyondView(int c, Point r, int64 t, MatchScratch& s, MatchResult& m) const
 {
-    // The estimates run up to maxDisparity_ + 0.5 (sub-pixel): further from the border, every one lies inside.
-    const int fromBorder = c == CAMERA_LEFT ? r.x : size_.width - 1 - r.x;
-    if (fromBorder > maxDisparity_)
+    // The estimates run up to params_.maxDisparity + 0.5 (sub-pixel): further from the border, every one lies inside.
+    const int fromBorder = c == CAMERA_LEFT ? r.x : params_.sensorSize.width - 1 - r.x;
+    if (fromBorder > params_.maxDisparity)
         return false;
     float prior;
     const size_t support = estimates_[c].median(r, PRIOR_RADIUS, PRIOR_ROW_REACH, t, s.disparities, prior);
@@ -109,7 +109,7 @@ float StereoEventMatcherImpl::averagedDisparity(int c, Point r, int64 t, float o
 {
     double sum = own;
     int n = 1;
-    const int radius = averagingRadius_;
+    const int radius = params_.averagingRadius;
     // This sensor's estimates around the event, then the other's around its counterpart (same rows: rectified).
     for (int side = 0; side < (counterpartX >= 0 ? 2 : 1); side++)
     {

@@ -60,14 +60,14 @@ void StereoEventMatcherImpl::processOperations(const Mat_<Event>& ev, const Stor
         const Event& e = ev(i);
         const Admission& a = admitted_[(size_t)i];
         const int p = e.p ? 1 : 0;
-        const size_t pixel = ((size_t)a.rectified.y * size_.width + a.rectified.x) * 2 + p;
+        const size_t pixel = ((size_t)a.rectified.y * params_.sensorSize.width + a.rectified.x) * 2 + p;
         if (!(operations_[(size_t)k] & 1))
         {
             activateUndecided(e.camera, a.rectified, p, e.t);
             pendingEvents_[e.camera][pixel]++;
             return;
         }
-        const bool laterPending = lookAhead_ > 0 && --pendingEvents_[e.camera][pixel] > 0;
+        const bool laterPending = params_.lookAhead > 0 && --pendingEvents_[e.camera][pixel] > 0;
         StereoEventEstimate est;
         est.rectified = a.rectified;
         processAdmitted(e, a.rectified, a.coldStartEnd, laterPending, s, est);
@@ -77,7 +77,7 @@ void StereoEventMatcherImpl::processOperations(const Mat_<Event>& ev, const Stor
             store(i, est);
     };
     std::exception_ptr failure;
-    if (numThreads_ == 1 || n < MIN_EVENTS_FOR_BANDS)
+    if (params_.numThreads == 1 || n < MIN_EVENTS_FOR_BANDS)
     {
         try
         {
@@ -101,10 +101,10 @@ void StereoEventMatcherImpl::processOperations(const Mat_<Event>& ev, const Stor
     else
     {
         const int conflictRows = bandConflictRows();
-        const int bands = std::max(1, std::min(numThreads_, size_.height / (conflictRows + 1)));
-        const std::vector<int> first = RowBandScheduler::splitRows(operationRows_, count, size_.height, bands,
+        const int bands = std::max(1, std::min(params_.numThreads, params_.sensorSize.height / (conflictRows + 1)));
+        const std::vector<int> first = RowBandScheduler::splitRows(operationRows_, count, params_.sensorSize.height, bands,
                                                                    conflictRows + 1);
-        const std::vector<int> segments = RowBandScheduler::splitSegments(first, size_.height, conflictRows);
+        const std::vector<int> segments = RowBandScheduler::splitSegments(first, params_.sensorSize.height, conflictRows);
         maps_[0].setRowBands(segments);
         maps_[1].setRowBands(segments);
         if (bandScratch_.size() < (size_t)bands)
@@ -134,7 +134,7 @@ void StereoEventMatcherImpl::processOperations(const Mat_<Event>& ev, const Stor
         };
         ops.expire = [this](int segment, int map) { maps_[map].expireEarliest(segment); };
         ops.process = [&](int b, int k) { run(k, bandScratch_[(size_t)b], true); };
-        failure = bands_.run(first, size_.height, conflictRows, operationRows_, operationTimes_, count, ops);
+        failure = bands_.run(first, params_.sensorSize.height, conflictRows, operationRows_, operationTimes_, count, ops);
         for (int b = 0; b < bands; b++)
         {
             for (const std::pair<int, StereoEventEstimate>& d : bandScratch_[(size_t)b].decided)
@@ -160,7 +160,7 @@ void StereoEventMatcherImpl::processOperations(const Mat_<Event>& ev, const Stor
 // times (the scheduler takes the expiries due before the first operation at or after their time: the single
 // thread's expiries before a decision). Without look-ahead an event is decided when it arrives. With it, an
 // event arrives (becomes active in its map) in stream order and is decided once an event more than
-// lookAhead_ later has arrived, or at the end of the packet; an arrival carries the time of the decision
+// params_.lookAhead later has arrived, or at the end of the packet; an arrival carries the time of the decision
 // before it, so that no expiry moves before it.
 void StereoEventMatcherImpl::scheduleOperations(int valid)
 {
@@ -172,7 +172,7 @@ void StereoEventMatcherImpl::scheduleOperations(int valid)
         operationRows_.push_back(admittedRows_[(size_t)i]);
         operationTimes_.push_back(t);
     };
-    if (lookAhead_ == 0)
+    if (params_.lookAhead == 0)
     {
         for (int i = 0; i < valid; i++)
             if (admittedRows_[(size_t)i] >= 0)
@@ -185,7 +185,7 @@ void StereoEventMatcherImpl::scheduleOperations(int valid)
     int next = 0;
     // Decides the events before `end` that are due when an event arrives at `arrival`; all of them at the end.
     auto decideUntil = [&](int end, int64 arrival, bool all) {
-        for (; next < end && (all || admittedRows_[(size_t)next] < 0 || timeAfter(times_[(size_t)next], lookAhead_) < arrival);
+        for (; next < end && (all || admittedRows_[(size_t)next] < 0 || timeAfter(times_[(size_t)next], params_.lookAhead) < arrival);
              next++)
             if (admittedRows_[(size_t)next] >= 0)
             {

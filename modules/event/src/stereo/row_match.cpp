@@ -73,7 +73,7 @@ inline double subPixelOffset(double cm, double c0, double cp)
 int StereoEventMatcherImpl::unseenColumns(int sign, Point r, int x0, int x1, int d) const
 {
     // Column j of the window is column r.x + j + sign * d of the other image.
-    const int unseen = sign < 0 ? d - r.x - x0 : x1 - (size_.width - 1 - r.x - d);
+    const int unseen = sign < 0 ? d - r.x - x0 : x1 - (params_.sensorSize.width - 1 - r.x - d);
     return std::max(0, std::min(x1 - x0 + 1, unseen));
 }
 
@@ -91,7 +91,7 @@ const unsigned* StereoEventMatcherImpl::scoreSeenColumns(const ZouDescriptorMap&
     int x0 = -h, x1 = h, y0 = -h, y1 = h;
     clipToImage(r, x0, x1, y0, y1);
     const int width = x1 - x0 + 1;
-    const int mostUnseen = unseenColumns(sign, r, x0, x1, minDisparity_ + candidates[n - 1]);
+    const int mostUnseen = unseenColumns(sign, r, x0, x1, params_.minDisparity + candidates[n - 1]);
     if (mostUnseen == 0 && columnsAt < 0)
     {
         s.unseenMass[0] = 0;
@@ -101,7 +101,7 @@ const unsigned* StereoEventMatcherImpl::scoreSeenColumns(const ZouDescriptorMap&
     // that the largest disparity maps past the border: their inner end is the same at every window size, and
     // each step adds columns at the outer end. Grown from the previous window by its new columns and the new
     // row at each end of the old ones; once needed, kept up at every step (the unseen columns only grow).
-    const int base = aggregationWindow_ / 2;
+    const int base = params_.aggregationWindow / 2;
     unsigned* const columnMass = s.columnMass.data();
     const auto massOfColumn = [&](int j, int ya, int yb) {
         unsigned sum = 0;
@@ -135,7 +135,7 @@ const unsigned* StereoEventMatcherImpl::scoreSeenColumns(const ZouDescriptorMap&
     unsigned* const score = s.seenScore.data();
     for (int i = n - 1; i >= 0; i--)
     {
-        const int unseen = unseenColumns(sign, r, x0, x1, minDisparity_ + candidates[i]);
+        const int unseen = unseenColumns(sign, r, x0, x1, params_.minDisparity + candidates[i]);
         if (unseen == 0)
         {
             std::copy(cost, cost + i + 1, score);
@@ -162,9 +162,9 @@ MatchResult StereoEventMatcherImpl::match(int c, Point r, int p, int64 t, MatchS
     // Disparity indices k whose column xo = r.x + sign * (min + k) lies in the other image; there, a candidate
     // is a column where the other sensor has structure of this polarity. Every k is written and the count
     // advances past the candidates: no branch on the (random) activity pattern.
-    const int kEnd = std::min(maxDisparity_, sign < 0 ? r.x : size_.width - 1 - r.x) - minDisparity_ + 1;
+    const int kEnd = std::min(params_.maxDisparity, sign < 0 ? r.x : params_.sensorSize.width - 1 - r.x) - params_.minDisparity + 1;
     const uchar* structure = other.nearestRow(r.y, p);
-    const int x0 = r.x + sign * minDisparity_;
+    const int x0 = r.x + sign * params_.minDisparity;
     const ptrdiff_t offsetStep = (ptrdiff_t)sign * ZouDescriptorMap::DESCRIPTOR_BYTES;
     int n = 0;
     for (int k = 0; k < kEnd; k++)
@@ -173,7 +173,7 @@ MatchResult StereoEventMatcherImpl::match(int c, Point r, int p, int64 t, MatchS
         n += structure[x0 + sign * k] != ZouDescriptorMap::NONE;
     }
     for (int i = 0; i < n; i++)
-        offsets[i] = (minDisparity_ + candidates[i]) * offsetStep;
+        offsets[i] = (params_.minDisparity + candidates[i]) * offsetStep;
     s.count = n;
     if (n == 0)
     {
@@ -182,28 +182,28 @@ MatchResult StereoEventMatcherImpl::match(int c, Point r, int p, int64 t, MatchS
     }
     std::fill_n(cost, n, 0u);
     // The other sensor's event times that the recency cost reads are loaded while the first window is summed.
-    const Range recencyColumns = recencyWeight_ > 0 ? recencyColumnRange(sign, r, s) : Range::all();
-    if (recencyWeight_ > 0)
-        for (int y = std::max(0, r.y - 1); y <= std::min(size_.height - 1, r.y + 1); y++)
+    const Range recencyColumns = params_.recencyWeight > 0 ? recencyColumnRange(sign, r, s) : Range::all();
+    if (params_.recencyWeight > 0)
+        for (int y = std::max(0, r.y - 1); y <= std::min(params_.sensorSize.height - 1, r.y + 1); y++)
         {
             prefetchRange(other.eventTimeRow(y, p) + recencyColumns.start, other.eventTimeRow(y, p) + recencyColumns.end);
             prefetchRange(other.activeRow(y, p) + recencyColumns.start, other.activeRow(y, p) + recencyColumns.end);
         }
-    int h = costWindow_ / 2;
+    int h = params_.costWindow / 2;
     unsigned mass = addRect(self, other, r, -h, h, -h, h, s);
     int columnsAt = -1;
     int priorColumns = -1;  // priorColumnReach(c, r), read once: the flows it reads do not change during match()
-    if (recencyWeight_ > 0)
+    if (params_.recencyWeight > 0)
         recencyShares(other, recencyColumns, sign, r, p, t, s);
     for (;;)
     {
         const unsigned* score = scoreSeenColumns(self, sign, r, h, columnsAt, s);
         const bool allColumnsSeen = score == cost;
-        // Each candidate pays its share of recencyWeight_ % of the window's mass (its cost against nothing), so
+        // Each candidate pays its share of params_.recencyWeight % of the window's mass (its cost against nothing), so
         // that the recency cost keeps its weight as the aggregation grows the window.
-        const double recencyFullCost = (double)mass * recencyWeight_ / 100.0;
+        const double recencyFullCost = (double)mass * params_.recencyWeight / 100.0;
         const auto recencyCost = [&](int i) { return (uint64)std::lround(recencyFullCost * s.recencyShare[(size_t)i]); };
-        if (recencyWeight_ > 0)
+        if (params_.recencyWeight > 0)
         {
             // Into s.seenScore: in place where scoreSeenColumns put the scores there.
             unsigned* const withRecency = s.seenScore.data();
@@ -226,19 +226,19 @@ MatchResult StereoEventMatcherImpl::match(int c, Point r, int p, int64 t, MatchS
         for (int i = hi + 1; i < n; i++)
             second = std::min(second, (uint64)score[i]);
         const unsigned bestCost = score[best];
-        const int xo = r.x + sign * (minDisparity_ + kBest);  // the counterpart's column
+        const int xo = r.x + sign * (params_.minDisparity + kBest);  // the counterpart's column
         int x0 = -h, x1 = h, y0 = -h, y1 = h;
         clipToImage(r, x0, x1, y0, y1);  // the costs' columns, never empty (r is inside)
         const int width = x1 - x0 + 1;
-        const int seen = width - (allColumnsSeen ? 0 : unseenColumns(sign, r, x0, x1, minDisparity_ + kBest));
+        const int seen = width - (allColumnsSeen ? 0 : unseenColumns(sign, r, x0, x1, params_.minDisparity + kBest));
         // The alternatives the winner must beat: every candidate further than one pixel away, and "no
         // counterpart (yet)", with the cost of matching against nothing (the window's mass). A winner that
         // only just beats nothing is most often a neighbour of a counterpart that has not arrived yet, off by
         // 2 px. The other side may simply hold more (a more sensitive sensor): against nothing, the larger
         // of the two sides' masses counts (taken only when it can change the outcome).
-        const uint64 margin = (uint64)(100 - uniquenessRatio_);
+        const uint64 margin = (uint64)(100 - params_.uniquenessRatio);
         const auto clearlyBelow = [margin](uint64 cost, uint64 alternative) { return cost * 100 < alternative * margin; };
-        const bool last = h >= aggregationWindow_ / 2;
+        const bool last = h >= params_.aggregationWindow / 2;
         // Both masses over the columns the other sensor sees at the winner, scaled like its score (the other
         // sensor's descriptors past its border are zero).
         uint64 nothing = scaleToWindow(mass - s.unseenMass[(size_t)(width - seen)], width, seen);
@@ -246,7 +246,7 @@ MatchResult StereoEventMatcherImpl::match(int c, Point r, int p, int64 t, MatchS
             nothing = std::max(nothing, scaleToWindow(rectMass(other, Point(xo, r.y), x0, x1, y0, y1), width, seen));
         // Against nothing the winner's descriptors count alone: a counterpart that fires a little apart in time is
         // still there, so its recency cost is added to nothing's as well.
-        if (recencyWeight_ > 0)
+        if (params_.recencyWeight > 0)
             nothing += recencyCost(best);
         const uint64 alternative = std::min(second, nothing);
         const bool unique = clearlyBelow(bestCost, alternative);
@@ -254,7 +254,7 @@ MatchResult StereoEventMatcherImpl::match(int c, Point r, int p, int64 t, MatchS
         // horizontal edge already at the first one. Along such an edge the candidates on the other sensor's copy
         // of it cost about the same at every window size (only the edge's ends, far away, tell them apart), so
         // growing the window seldom decides, while it costs such an event several times a first window's work.
-        if (!unique && priorTolerance_ > 0 && (last || h == costWindow_ / 2))
+        if (!unique && params_.priorTolerance > 0 && (last || h == params_.costWindow / 2))
         {
             if (priorColumns < 0)
                 priorColumns = priorColumnReach(c, r);
@@ -269,7 +269,7 @@ MatchResult StereoEventMatcherImpl::match(int c, Point r, int p, int64 t, MatchS
             // Confidence: the share by which the winner beats the best alternative; 0 when the other
             // sensor's own estimates around the counterpart contradict it (left-right check).
             m.confidence = alternative > 0 ? std::max(0.f, (float)(1.0 - (double)bestCost / (double)alternative)) : 0.f;
-            double d = minDisparity_ + kBest;
+            double d = params_.minDisparity + kBest;
             // Candidates run by disparity: the neighbours, when they are candidates, are next to the best.
             if (lo == best - 1 && hi == best + 1)
                 d += subPixelOffset(score[best - 1], bestCost, score[best + 1]);
@@ -292,16 +292,16 @@ MatchResult StereoEventMatcherImpl::match(int c, Point r, int p, int64 t, MatchS
 Range StereoEventMatcherImpl::recencyColumnRange(int sign, Point r, const MatchScratch& s) const
 {
     // The candidates' columns run from r.x + sign * (min + candidates[0]) to that of the last.
-    const int xFirst = r.x + sign * (minDisparity_ + s.candidates[0]);
-    const int xLast = r.x + sign * (minDisparity_ + s.candidates[(size_t)s.count - 1]);
-    return Range(std::max(0, std::min(xFirst, xLast) - 1), std::min(size_.width, std::max(xFirst, xLast) + 2));
+    const int xFirst = r.x + sign * (params_.minDisparity + s.candidates[0]);
+    const int xLast = r.x + sign * (params_.minDisparity + s.candidates[(size_t)s.count - 1]);
+    return Range(std::max(0, std::min(xFirst, xLast) - 1), std::min(params_.sensorSize.width, std::max(xFirst, xLast) + 2));
 }
 
 // An edge's events fire in both sensors at about the same time; the trail another edge left a while ago (a
 // slower one: a torso behind a swinging leg, a pole behind a passing box) can match the window's layout as well
 // or better, but not the moment. A candidate's share of the recency cost grows with the time between the event
 // and the other sensor's active event nearest to it in time within a pixel of the candidate: 0 for none, 1
-// from recencyTime_ on, and 1 where no event is active within a pixel (a candidate needs structure only
+// from params_.recencyTime on, and 1 where no event is active within a pixel (a candidate needs structure only
 // within the maximum vector length). The candidates' 3 x 3 neighbourhoods overlap: the three rows' smallest
 // gap is taken once per column, then the smallest of three columns per candidate.
 void StereoEventMatcherImpl::recencyShares(const ZouDescriptorMap& other, const Range& columns, int sign, Point r, int p,
@@ -312,7 +312,7 @@ void StereoEventMatcherImpl::recencyShares(const ZouDescriptorMap& other, const 
     const int x0 = columns.start, x1 = columns.end - 1;
     uint64* const gap = s.columnTimeGap.data();
     std::fill(gap + x0, gap + x1 + 1, std::numeric_limits<uint64>::max());
-    for (int y = std::max(0, r.y - 1); y <= std::min(size_.height - 1, r.y + 1); y++)
+    for (int y = std::max(0, r.y - 1); y <= std::min(params_.sensorSize.height - 1, r.y + 1); y++)
     {
         const uchar* const active = other.activeRow(y, p);
         const int64* const times = other.eventTimeRow(y, p);
@@ -326,9 +326,9 @@ void StereoEventMatcherImpl::recencyShares(const ZouDescriptorMap& other, const 
     float* const share = s.recencyShare.data();
     for (int i = 0; i < n; i++)
     {
-        const int x = r.x + sign * (minDisparity_ + candidates[i]);
+        const int x = r.x + sign * (params_.minDisparity + candidates[i]);
         const uint64 nearest = std::min(gap[x], std::min(gap[std::max(x0, x - 1)], gap[std::min(x1, x + 1)]));
-        share[i] = nearest >= (uint64)recencyTime_ ? 1.f : (float)((double)nearest / (double)recencyTime_);
+        share[i] = nearest >= (uint64)params_.recencyTime ? 1.f : (float)((double)nearest / (double)params_.recencyTime);
     }
 }
 

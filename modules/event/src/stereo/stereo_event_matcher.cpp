@@ -19,8 +19,7 @@ StereoEventMatcherImpl::StereoEventMatcherImpl(Size size, int mode)
 {
     estimators_[0] = createRowBandLifetimeEstimator(size);
     estimators_[1] = createRowBandLifetimeEstimator(size);
-    checkMode(mode);
-    mode_ = mode;
+    params_.setMode(mode);
     setSensorSize(size);
 }
 
@@ -73,12 +72,12 @@ void StereoEventMatcherImpl::process(InputArray events, OutputArray disparity, O
             fl(i, 1) = s.flow[1];
         }
     };
-    if (mode_ == STEREO_FRAME_SGBM)
+    if (params_.mode == STEREO_FRAME_SGBM)
     {
         processFrames(ev, store);
         return;
     }
-    if (lookAhead_ > 0 || (numThreads_ > 1 && n >= MIN_EVENTS_FOR_BANDS))
+    if (params_.lookAhead > 0 || (params_.numThreads > 1 && n >= MIN_EVENTS_FOR_BANDS))
     {
         processOperations(ev, store);
         return;
@@ -93,7 +92,7 @@ void StereoEventMatcherImpl::process(InputArray events, OutputArray disparity, O
 
 void StereoEventMatcherImpl::processEvent(const Event& e, StereoEventEstimate& est)
 {
-    if (mode_ == STEREO_FRAME_SGBM)
+    if (params_.mode == STEREO_FRAME_SGBM)
         CV_Error(Error::StsNotImplemented, "StereoEventMatcher: FRAME_SGBM works on windows of events; use process() "
                                            "with whole windows (processEvent is for the per-event modes)");
     est = StereoEventEstimate();
@@ -112,15 +111,15 @@ void StereoEventMatcherImpl::processEvent(const Event& e, StereoEventEstimate& e
 
 void StereoEventMatcherImpl::reset()
 {
-    const int margin = std::max(aggregationWindow_ / 2, descriptorWindow_ / 2);
+    const int margin = std::max(params_.aggregationWindow / 2, params_.descriptorWindow / 2);
     for (int c = 0; c < 2; c++)
     {
-        maps_[c].configure(size_, descriptorWindow_, maxVectorLength_, margin);
+        maps_[c].configure(params_.sensorSize, params_.descriptorWindow, params_.maxVectorLength, margin);
         estimators_[c]->reset();
-        estimates_[c].reset(size_);
-        pendingEvents_[c].assign((size_t)size_.area() * 2, 0);
+        estimates_[c].reset(params_.sensorSize);
+        pendingEvents_[c].assign((size_t)params_.sensorSize.area() * 2, 0);
     }
-    frames_.configure(size_, minDisparity_, maxDisparity_, frameWindow_);
+    frames_.configure(params_.sensorSize, params_.minDisparity, params_.maxDisparity, params_.frameWindow);
     lastTime_ = std::numeric_limits<int64>::min();
     sizeScratch(scratch_);
     scratch_.lifetimeTicks = 0;
@@ -141,18 +140,18 @@ double StereoEventMatcherImpl::getLifetimeSeconds() const
 
 void StereoEventMatcherImpl::sizeScratch(MatchScratch& s) const
 {
-    s.matchedValues.resize((size_t)lifetimeWindow_ * lifetimeWindow_ + WINDOW_MEDIAN_PAD);
-    s.matchedPositions.resize((size_t)lifetimeWindow_ * lifetimeWindow_ + WINDOW_MEDIAN_PAD);
-    s.matchedKeys.resize((size_t)lifetimeWindow_ * lifetimeWindow_);
-    const size_t range = (size_t)(maxDisparity_ - minDisparity_ + 1);
+    s.matchedValues.resize((size_t)params_.lifetimeWindow * params_.lifetimeWindow + WINDOW_MEDIAN_PAD);
+    s.matchedPositions.resize((size_t)params_.lifetimeWindow * params_.lifetimeWindow + WINDOW_MEDIAN_PAD);
+    s.matchedKeys.resize((size_t)params_.lifetimeWindow * params_.lifetimeWindow);
+    const size_t range = (size_t)(params_.maxDisparity - params_.minDisparity + 1);
     s.candidates.resize(range);
     s.offsets.resize(range);
     s.cost.resize(range);
     s.seenScore.resize(range);
     s.recencyShare.resize(range);
-    s.columnTimeGap.resize((size_t)size_.width);
-    s.columnMass.resize((size_t)aggregationWindow_);
-    s.unseenMass.resize((size_t)aggregationWindow_ + 1);
+    s.columnTimeGap.resize((size_t)params_.sensorSize.width);
+    s.columnMass.resize((size_t)params_.aggregationWindow);
+    s.unseenMass.resize((size_t)params_.aggregationWindow + 1);
 }
 
 void StereoEventMatcherImpl::setCalibration(const StereoCalibration& calibration)
@@ -167,10 +166,10 @@ void StereoEventMatcherImpl::setCalibration(const StereoCalibration& calibration
         return;
     }
     calibration.validate();
-    if (calibration.imageSize != size_)
+    if (calibration.imageSize != params_.sensorSize)
         CV_Error_(Error::StsBadArg, ("StereoEventMatcher: the calibration is for %d x %d sensors but the matcher's "
                                      "sensor is %d x %d", calibration.imageSize.width, calibration.imageSize.height,
-                                     size_.width, size_.height));
+                                     params_.sensorSize.width, params_.sensorSize.height));
     for (int c = 0; c < 2; c++)
         lut_[c] = buildRectificationTable(calibration, c);
     calibration_ = calibration;
@@ -216,7 +215,7 @@ void StereoEventMatcherImpl::processFrames(const Mat_<Event>& ev, const StoreFn&
                 if (s.disparity > 0 && focalBaseline_ != 0)
                     s.depth = (float)(focalBaseline_ / s.disparity);
             }
-            estimates_[cameras[(size_t)i]].remember(s.rectified, times[(size_t)i], frameWindow_, s.disparity);
+            estimates_[cameras[(size_t)i]].remember(s.rectified, times[(size_t)i], params_.frameWindow, s.disparity);
         }
         store(i, s);
     }

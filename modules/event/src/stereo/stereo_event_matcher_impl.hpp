@@ -11,6 +11,7 @@
 #include "stereo/descriptor_cost.hpp"
 #include "stereo/frame_sgbm_matcher.hpp"
 #include "stereo/row_band_scheduler.hpp"
+#include "stereo/stereo_matcher_params.hpp"
 #include "stereo/window_median.hpp"
 #include "stereo/zou_descriptor_map.hpp"
 
@@ -85,75 +86,59 @@ public:
     void loadCalibration(const String& path) CV_OVERRIDE { setCalibration(readStereoCalibration(path)); }
 
     Ptr<LifetimeEstimator> getLifetimeEstimator(int camera) const CV_OVERRIDE;
-    int getMode() const CV_OVERRIDE { return mode_; }
 
+    // Parameters: StereoMatcherParams validates them; a change that alters the maps' layout or the windows
+    // resets the matcher (matcher_parameters.cpp).
+    int getMode() const CV_OVERRIDE { return params_.mode; }
     void setMode(int mode) CV_OVERRIDE;
-    Size getSensorSize() const CV_OVERRIDE { return size_; }
-
+    Size getSensorSize() const CV_OVERRIDE { return params_.sensorSize; }
     void setSensorSize(Size s) CV_OVERRIDE;
-    int getMinDisparity() const CV_OVERRIDE { return minDisparity_; }
-
-    void setMinDisparity(int d) CV_OVERRIDE { setDisparityRange(d, maxDisparity_); }
-    int getMaxDisparity() const CV_OVERRIDE { return maxDisparity_; }
-
-    void setMaxDisparity(int d) CV_OVERRIDE { setDisparityRange(minDisparity_, d); }
-    int getDescriptorWindow() const CV_OVERRIDE { return descriptorWindow_; }
-
-    void setDescriptorWindow(int n) CV_OVERRIDE;
-    int getMaxVectorLength() const CV_OVERRIDE { return maxVectorLength_; }
-
-    void setMaxVectorLength(int r) CV_OVERRIDE;
-    int getCostWindow() const CV_OVERRIDE { return costWindow_; }
-
-    void setCostWindow(int w) CV_OVERRIDE;
-    int getLifetimeWindow() const CV_OVERRIDE { return lifetimeWindow_; }
-
-    void setLifetimeWindow(int w) CV_OVERRIDE;
-    int getAggregationWindow() const CV_OVERRIDE { return aggregationWindow_; }
-
-    void setAggregationWindow(int a) CV_OVERRIDE;
-    int getUniquenessRatio() const CV_OVERRIDE { return uniquenessRatio_; }
-
-    void setUniquenessRatio(int u) CV_OVERRIDE;
-    double getMinConfidence() const CV_OVERRIDE { return minConfidence_; }
-
-    void setMinConfidence(double c) CV_OVERRIDE;
-    double getMatchedLifetimeConfidence() const CV_OVERRIDE { return matchedLifetimeConfidence_; }
-    int getMaxLifetimeCopies() const CV_OVERRIDE { return maxLifetimeCopies_; }
-    void setMaxLifetimeCopies(int copies) CV_OVERRIDE;
-
-    void setMatchedLifetimeConfidence(double c) CV_OVERRIDE;
-    double getLifetimeCopyConfidence() const CV_OVERRIDE { return lifetimeCopyConfidence_; }
-    void setLifetimeCopyConfidence(double c) CV_OVERRIDE;
-    int getPriorTolerance() const CV_OVERRIDE { return priorTolerance_; }
-
-    void setPriorTolerance(int percent) CV_OVERRIDE;
-    int getRecencyWeight() const CV_OVERRIDE { return recencyWeight_; }
-    void setRecencyWeight(int percent) CV_OVERRIDE;
-    double getRecencyTime() const CV_OVERRIDE { return (double)recencyTime_; }
-    void setRecencyTime(double us) CV_OVERRIDE;
-    int getAveragingRadius() const CV_OVERRIDE { return averagingRadius_; }
-    void setAveragingRadius(int px) CV_OVERRIDE;
-    double getLookAhead() const CV_OVERRIDE { return (double)lookAhead_; }
-
-    void setLookAhead(double us) CV_OVERRIDE;
-    double getFixedInterval() const CV_OVERRIDE { return (double)fixedInterval_; }
-
-    void setFixedInterval(double us) CV_OVERRIDE { fixedInterval_ = duration(us, "fixed interval"); }
-    double getFrameWindow() const CV_OVERRIDE { return (double)frameWindow_; }
-
-    void setFrameWindow(double us) CV_OVERRIDE;
-    double getMaxLifetime() const CV_OVERRIDE { return (double)maxLifetime_; }
-
-    void setMaxLifetime(double us) CV_OVERRIDE { maxLifetime_ = duration(us, "max lifetime"); }
-    double getNoiseActiveTime() const CV_OVERRIDE { return (double)noiseActiveTime_; }
-    void setNoiseActiveTime(double us) CV_OVERRIDE;
-    double getActiveDistance() const CV_OVERRIDE { return activeDistance_; }
-
-    void setActiveDistance(double px) CV_OVERRIDE;
-    int getNumThreads() const CV_OVERRIDE { return numThreads_; }
-
-    void setNumThreads(int threads) CV_OVERRIDE;
+    int getMinDisparity() const CV_OVERRIDE { return params_.minDisparity; }
+    void setMinDisparity(int d) CV_OVERRIDE { setDisparityRange(d, params_.maxDisparity); }
+    int getMaxDisparity() const CV_OVERRIDE { return params_.maxDisparity; }
+    void setMaxDisparity(int d) CV_OVERRIDE { setDisparityRange(params_.minDisparity, d); }
+    int getDescriptorWindow() const CV_OVERRIDE { return params_.descriptorWindow; }
+    void setDescriptorWindow(int n) CV_OVERRIDE { params_.setDescriptorWindow(n); reset(); }
+    int getMaxVectorLength() const CV_OVERRIDE { return params_.maxVectorLength; }
+    void setMaxVectorLength(int r) CV_OVERRIDE { params_.setMaxVectorLength(r); reset(); }
+    int getCostWindow() const CV_OVERRIDE { return params_.costWindow; }
+    void setCostWindow(int w) CV_OVERRIDE { params_.setCostWindow(w); reset(); }
+    int getLifetimeWindow() const CV_OVERRIDE { return params_.lifetimeWindow; }
+    void setLifetimeWindow(int w) CV_OVERRIDE { params_.setLifetimeWindow(w); reset(); }
+    int getAggregationWindow() const CV_OVERRIDE { return params_.aggregationWindow; }
+    void setAggregationWindow(int a) CV_OVERRIDE { params_.setAggregationWindow(a); reset(); }
+    int getUniquenessRatio() const CV_OVERRIDE { return params_.uniquenessRatio; }
+    void setUniquenessRatio(int u) CV_OVERRIDE { params_.setUniquenessRatio(u); }
+    double getMinConfidence() const CV_OVERRIDE { return params_.minConfidence; }
+    void setMinConfidence(double c) CV_OVERRIDE { params_.setMinConfidence(c); }
+    double getMatchedLifetimeConfidence() const CV_OVERRIDE { return params_.matchedLifetimeConfidence; }
+    void setMatchedLifetimeConfidence(double c) CV_OVERRIDE { params_.setMatchedLifetimeConfidence(c); }
+    double getLifetimeCopyConfidence() const CV_OVERRIDE { return params_.lifetimeCopyConfidence; }
+    void setLifetimeCopyConfidence(double c) CV_OVERRIDE { params_.setLifetimeCopyConfidence(c); }
+    int getMaxLifetimeCopies() const CV_OVERRIDE { return params_.maxLifetimeCopies; }
+    void setMaxLifetimeCopies(int copies) CV_OVERRIDE { params_.setMaxLifetimeCopies(copies); }
+    int getPriorTolerance() const CV_OVERRIDE { return params_.priorTolerance; }
+    void setPriorTolerance(int percent) CV_OVERRIDE { params_.setPriorTolerance(percent); }
+    int getRecencyWeight() const CV_OVERRIDE { return params_.recencyWeight; }
+    void setRecencyWeight(int percent) CV_OVERRIDE { params_.setRecencyWeight(percent); }
+    double getRecencyTime() const CV_OVERRIDE { return (double)params_.recencyTime; }
+    void setRecencyTime(double us) CV_OVERRIDE { params_.setRecencyTime(us); }
+    int getAveragingRadius() const CV_OVERRIDE { return params_.averagingRadius; }
+    void setAveragingRadius(int px) CV_OVERRIDE { params_.setAveragingRadius(px); }
+    double getLookAhead() const CV_OVERRIDE { return (double)params_.lookAhead; }
+    void setLookAhead(double us) CV_OVERRIDE { params_.setLookAhead(us); }
+    double getFixedInterval() const CV_OVERRIDE { return (double)params_.fixedInterval; }
+    void setFixedInterval(double us) CV_OVERRIDE { params_.setFixedInterval(us); }
+    double getFrameWindow() const CV_OVERRIDE { return (double)params_.frameWindow; }
+    void setFrameWindow(double us) CV_OVERRIDE { params_.setFrameWindow(us); reset(); }
+    double getMaxLifetime() const CV_OVERRIDE { return (double)params_.maxLifetime; }
+    void setMaxLifetime(double us) CV_OVERRIDE { params_.setMaxLifetime(us); }
+    double getNoiseActiveTime() const CV_OVERRIDE { return (double)params_.noiseActiveTime; }
+    void setNoiseActiveTime(double us) CV_OVERRIDE { params_.setNoiseActiveTime(us); }
+    double getActiveDistance() const CV_OVERRIDE { return params_.activeDistance; }
+    void setActiveDistance(double px) CV_OVERRIDE { params_.setActiveDistance(px); }
+    int getNumThreads() const CV_OVERRIDE { return params_.numThreads; }
+    void setNumThreads(int threads) CV_OVERRIDE { params_.setNumThreads(threads); }
     void setTimeLifetimes(bool on) CV_OVERRIDE { timeLifetimes_ = on; }
     bool getTimeLifetimes() const CV_OVERRIDE { return timeLifetimes_; }
     double getLifetimeSeconds() const CV_OVERRIDE;
@@ -169,7 +154,7 @@ private:
     // ---- the public face (stereo_event_matcher.cpp)
     void sizeScratch(MatchScratch& s) const;
 
-    // FRAME_SGBM: the packet as frames of frameWindow_ matched by StereoSGBM (FrameSgbmMatcher).
+    // FRAME_SGBM: the packet as frames of the frame window matched by StereoSGBM (FrameSgbmMatcher).
     void processFrames(const Mat_<Event>& ev, const StoreFn& store);
 
     // ---- the per-event decision (event_decision.cpp)
@@ -189,7 +174,7 @@ private:
     void activateUndecided(int c, Point r, int p, int64 t);
 
     // How long an event with this lifetime (us per pixel) stays active: until its edge has moved
-    // activeDistance_ pixels, at most maxLifetime_.
+    // the active distance in pixels, at most the max lifetime.
     int64 activeSpan(double lifetime) const;
 
     // ---- look-ahead and row bands (operation_schedule.cpp)
@@ -202,12 +187,6 @@ private:
     void scheduleOperations(int valid);
 
     // ---- parameters (matcher_parameters.cpp)
-    static void checkMode(int mode);
-
-    static int oddWindow(int n, int lo, int hi, const char* what);
-
-    static int64 duration(double us, const char* what);
-
     void setDisparityRange(int lo, int hi);
 
     // How many rows above and below its own an event's processing reads or writes: the aggregation window's
@@ -217,13 +196,13 @@ private:
     int eventRowReach() const;
 
     // The same for an expiry (a deactivation).
-    int expiryRowReach() const { return std::max(2 * maxVectorLength_, maxVectorLength_ + descriptorWindow_ / 2); }
+    int expiryRowReach() const { return std::max(2 * params_.maxVectorLength, params_.maxVectorLength + params_.descriptorWindow / 2); }
 
     // How many rows above and below its own an event or an expiry writes: the votes of the vectors an
     // activation or deactivation changes (pixels within the max length, each voting into its descriptor
     // window) and the lifetime estimator's prediction for the neighbour the edge moves to (1 row). Everything
     // further out (the cost windows, the prior, the medians, the re-search) is only read.
-    int rowWriteReach() const { return std::max(maxVectorLength_ + descriptorWindow_ / 2, 1); }
+    int rowWriteReach() const { return std::max(params_.maxVectorLength + params_.descriptorWindow / 2, 1); }
 
     // Row bands: two operations further apart in rows than this never touch data that one of them writes
     // (the largest write reach + the largest reach of any access; eventRowReach() includes the expiries').
@@ -242,9 +221,9 @@ private:
     bool clipToImage(Point r, int& x0, int& x1, int& y0, int& y1) const
     {
         x0 = std::max(x0, -r.x);
-        x1 = std::min(x1, size_.width - 1 - r.x);
+        x1 = std::min(x1, params_.sensorSize.width - 1 - r.x);
         y0 = std::max(y0, -r.y);
-        y1 = std::min(y1, size_.height - 1 - r.y);
+        y1 = std::min(y1, params_.sensorSize.height - 1 - r.y);
         return x0 <= x1 && y0 <= y1;
     }
 
@@ -279,6 +258,8 @@ private:
     // Its neighbourhood: PRIOR_RADIUS rows above and below, and `columns` (priorColumnReach) to each side:
     // PRIOR_RADIUS, or PRIOR_ROW_REACH on a horizontal edge.
     enum { PRIOR_RADIUS = 5, PRIOR_ROW_REACH = 30, PRIOR_SUPPORT = 3 };
+    static_assert((int)StereoMatcherParams::MAX_AVERAGING_RADIUS <= (int)PRIOR_RADIUS,
+                  "the averaging must stay within the rows an event's processing reaches");
     bool decideByPrior(int c, Point r, int p, int64 t, int columns, const unsigned* score, unsigned bestCost, MatchScratch& s,
                        MatchResult& m) const;
 
@@ -295,7 +276,7 @@ private:
     bool consistent(int c, int x, int y, double d, int64 t, MatchScratch& s) const;
 
     // The output disparity of an event of sensor c at r with its own estimate `own`: the mean of `own` and the
-    // estimates active at t within averagingRadius_ pixels and AVERAGING_TOLERANCE of it, sensor c's around r
+    // estimates active at t within the averaging radius and AVERAGING_TOLERANCE of it, sensor c's around r
     // and, when it was matched (counterpartX >= 0), the other sensor's around its counterpart.
     float averagedDisparity(int c, Point r, int64 t, float own, int counterpartX) const;
     static constexpr float AVERAGING_TOLERANCE = 1.5f;
@@ -344,20 +325,7 @@ private:
     Mat colourLut() const;
 
     int colourIndex(float d) const;
-    Size size_;
-    int mode_ = STEREO_COUPLED;
-    int minDisparity_ = 0, maxDisparity_ = 40;
-    int descriptorWindow_ = 3, maxVectorLength_ = 3, costWindow_ = 17, lifetimeWindow_ = 9, aggregationWindow_ = 31;
-    int uniquenessRatio_ = 15;
-    int64 fixedInterval_ = 10000, frameWindow_ = 33000, maxLifetime_ = 100000, noiseActiveTime_ = 25000;
-    double activeDistance_ = 2.5;
-    double minConfidence_ = 0, matchedLifetimeConfidence_ = 0.15, lifetimeCopyConfidence_ = 0.3;
-    int maxLifetimeCopies_ = 1;
-    int priorTolerance_ = 30;
-    int recencyWeight_ = 15;
-    int64 recencyTime_ = 10000;
-    int averagingRadius_ = 4;
-    int64 lookAhead_ = 10000;
+    StereoMatcherParams params_;
     StereoCalibration calibration_;
     std::vector<int> lut_[2];  // raw pixel -> rectified pixel index (-1: outside); empty: no calibration
     double focalBaseline_ = 0;
@@ -372,7 +340,6 @@ private:
     // The matched window's gather and median for this CPU, fetched once.
     const WindowMedianKernels& windowMedian_ = windowMedianKernelsForThisCpu();
     MatchScratch scratch_;  // processEvent's
-    int numThreads_ = 1;
     bool timeLifetimes_ = false;
     // processOperations: the scheduler, each band's scratch, each event's admission, the operations.
     struct Admission

@@ -167,6 +167,9 @@ the edge's structure with them. The paper leaves them out: setNoiseActiveTime(0)
 
 Memory is O(sensor pixels): the per-pixel maps, an expiry heap over pixels (with setNumThreads(), up to
 three per row band: its rows next to each neighbour apart) and the two LifetimeEstimators.
+
+write() stores every parameter, the lifetime estimators' and the calibration; read() sets those a node holds
+and keeps the others, and a value out of range raises cv::Exception and changes none of them.
 */
 class CV_EXPORTS_W StereoEventMatcher : public Algorithm
 {

@@ -1,0 +1,245 @@
+// This file is part of OpenCV project.
+// It is subject to the license terms in the LICENSE file found in the top-level directory
+// of this distribution and at http://opencv.org/license.html.
+
+#include "precomp.hpp"
+#include "stereo/stereo_matcher_params.hpp"
+
+namespace cv {
+namespace event {
+namespace detail {
+
+namespace {
+
+int oddWindow(int n, int lo, int hi, const char* what)
+{
+    if (n < lo || n > hi || n % 2 == 0)
+        CV_Error_(Error::StsBadArg, ("StereoEventMatcher: %s %d; must be odd, %d..%d", what, n, lo, hi));
+    return n;
+}
+
+int64 duration(double us, const char* what)
+{
+    if (!(us >= 1) || us > 1e12)
+        CV_Error_(Error::StsBadArg, ("StereoEventMatcher: %s %g us; must be 1 us .. 1e12 us", what, us));
+    return (int64)std::llround(us);
+}
+
+}  // namespace
+
+void StereoMatcherParams::setMode(int m)
+{
+    if (m < STEREO_COUPLED || m > STEREO_FRAME_SGBM)
+        CV_Error_(Error::StsBadArg, ("StereoEventMatcher: mode %d; use a StereoMatchMode (0..3)", m));
+    mode = m;
+}
+
+void StereoMatcherParams::setSensorSize(Size s)
+{
+    if (s.width <= 0 || s.height <= 0 || s.width > 32768 || s.height > 32768)
+        CV_Error_(Error::StsBadArg, ("StereoEventMatcher: sensor size %d x %d is not valid", s.width, s.height));
+    sensorSize = s;
+}
+
+void StereoMatcherParams::setDisparityRange(int lo, int hi)
+{
+    if (lo < 0 || hi < lo || hi > 1024)
+        CV_Error_(Error::StsBadArg, ("StereoEventMatcher: disparity range [%d, %d]; need 0 <= min <= max <= 1024", lo, hi));
+    minDisparity = lo;
+    maxDisparity = hi;
+}
+
+void StereoMatcherParams::setDescriptorWindow(int n)
+{
+    descriptorWindow = oddWindow(n, 1, 15, "descriptor window");
+}
+
+void StereoMatcherParams::setMaxVectorLength(int r)
+{
+    if (r < 0 || r > 7)
+        CV_Error_(Error::StsBadArg, ("StereoEventMatcher: max vector length %d; must be 0..7 px", r));
+    maxVectorLength = r;
+}
+
+void StereoMatcherParams::setCostWindow(int w)
+{
+    costWindow = oddWindow(w, 1, 31, "cost window");
+    aggregationWindow = std::max(aggregationWindow, costWindow);
+}
+
+void StereoMatcherParams::setLifetimeWindow(int w)
+{
+    lifetimeWindow = oddWindow(w, 1, 31, "lifetime window");
+}
+
+void StereoMatcherParams::setAggregationWindow(int a)
+{
+    aggregationWindow = oddWindow(a, costWindow, 31, "aggregation window (>= the cost window)");
+}
+
+void StereoMatcherParams::setUniquenessRatio(int u)
+{
+    if (u < 0 || u > 99)
+        CV_Error_(Error::StsBadArg, ("StereoEventMatcher: uniqueness ratio %d; must be 0..99 %%", u));
+    uniquenessRatio = u;
+}
+
+void StereoMatcherParams::setMinConfidence(double c)
+{
+    if (!(c >= 0 && c <= 1))
+        CV_Error_(Error::StsBadArg, ("StereoEventMatcher: minimum confidence %g; must be 0..1 (0: every event with a "
+                                     "candidate keeps its best disparity)", c));
+    minConfidence = c;
+}
+
+void StereoMatcherParams::setMatchedLifetimeConfidence(double c)
+{
+    if (!(c >= 0 && c <= 1))
+        CV_Error_(Error::StsBadArg, ("StereoEventMatcher: matched lifetime confidence %g; must be 0..1 (0: every match "
+                                     "passes its counterpart's lifetime)", c));
+    matchedLifetimeConfidence = c;
+}
+
+void StereoMatcherParams::setLifetimeCopyConfidence(double c)
+{
+    if (!(c >= 0 && c <= 1))
+        CV_Error_(Error::StsBadArg, ("StereoEventMatcher: lifetime copy confidence %g; must be 0..1 (0: every match "
+                                     "passes its lifetime on)", c));
+    lifetimeCopyConfidence = c;
+}
+
+void StereoMatcherParams::setMaxLifetimeCopies(int copies)
+{
+    if (copies < 0 || copies > 255)
+        CV_Error_(Error::StsBadArg, ("StereoEventMatcher: max lifetime copies %d; must be 0..255 (0: every event "
+                                     "fits its plane, 255: no limit)", copies));
+    maxLifetimeCopies = copies;
+}
+
+void StereoMatcherParams::setPriorTolerance(int percent)
+{
+    if (percent < 0 || percent > 1000)
+        CV_Error_(Error::StsBadArg, ("StereoEventMatcher: prior tolerance %d %%; must be 0..1000 %% (0: no temporal prior)", percent));
+    priorTolerance = percent;
+}
+
+void StereoMatcherParams::setRecencyWeight(int percent)
+{
+    if (percent < 0 || percent > 100)
+        CV_Error_(Error::StsBadArg, ("StereoEventMatcher: recency weight %d %%; must be 0..100 %% (0: the cost of the "
+                                     "descriptors alone)", percent));
+    recencyWeight = percent;
+}
+
+void StereoMatcherParams::setRecencyTime(double us)
+{
+    if (!(us >= 1 && us <= 1e6))
+        CV_Error_(Error::StsBadArg, ("StereoEventMatcher: recency time %g us; must be 1..1e6 us", us));
+    recencyTime = (int64)std::llround(us);
+}
+
+void StereoMatcherParams::setAveragingRadius(int px)
+{
+    if (px < 0 || px > (int)MAX_AVERAGING_RADIUS)
+        CV_Error_(Error::StsBadArg, ("StereoEventMatcher: averaging radius %d px; must be 0..%d px (0: each event keeps "
+                                     "its own estimate)", px, (int)MAX_AVERAGING_RADIUS));
+    averagingRadius = px;
+}
+
+void StereoMatcherParams::setLookAhead(double us)
+{
+    if (!(us >= 0 && us <= 1e6))
+        CV_Error_(Error::StsBadArg, ("StereoEventMatcher: look-ahead %g us; must be 0..1e6 us (0: each event is decided "
+                                     "when it arrives)", us));
+    lookAhead = (int64)std::llround(us);
+}
+
+void StereoMatcherParams::setFixedInterval(double us)
+{
+    fixedInterval = duration(us, "fixed interval");
+}
+
+void StereoMatcherParams::setFrameWindow(double us)
+{
+    frameWindow = duration(us, "frame window");
+}
+
+void StereoMatcherParams::setMaxLifetime(double us)
+{
+    maxLifetime = duration(us, "max lifetime");
+}
+
+void StereoMatcherParams::setNoiseActiveTime(double us)
+{
+    if (!(us >= 0 && us <= 1e6))
+        CV_Error_(Error::StsBadArg, ("StereoEventMatcher: noise active time %g us; must be 0..1e6 us (0: an event "
+                                     "without a lifetime is not active)", us));
+    noiseActiveTime = (int64)std::llround(us);
+}
+
+void StereoMatcherParams::setActiveDistance(double px)
+{
+    if (!(px >= 0.1 && px <= 100))
+        CV_Error_(Error::StsBadArg, ("StereoEventMatcher: active distance %g px; must be 0.1..100 px (1: active "
+                                     "for one lifetime, as in the paper)", px));
+    activeDistance = px;
+}
+
+void StereoMatcherParams::setNumThreads(int threads)
+{
+    if (threads < 1 || threads > 64)
+        CV_Error_(Error::StsBadArg, ("StereoEventMatcher: %d threads; must be 1..64", threads));
+    numThreads = threads;
+}
+
+void StereoMatcherParams::write(FileStorage& fs) const
+{
+    fs << "mode" << getStereoModeName(mode) << "sensorWidth" << sensorSize.width << "sensorHeight" << sensorSize.height
+       << "minDisparity" << minDisparity << "maxDisparity" << maxDisparity << "descriptorWindow" << descriptorWindow
+       << "maxVectorLength" << maxVectorLength << "costWindow" << costWindow << "lifetimeWindow" << lifetimeWindow
+       << "aggregationWindow" << aggregationWindow << "uniquenessRatio" << uniquenessRatio
+       << "minConfidence" << minConfidence << "matchedLifetimeConfidence" << matchedLifetimeConfidence
+       << "lifetimeCopyConfidence" << lifetimeCopyConfidence << "maxLifetimeCopies" << maxLifetimeCopies
+       << "priorTolerance" << priorTolerance << "recencyWeight" << recencyWeight << "recencyTime" << (double)recencyTime
+       << "averagingRadius" << averagingRadius << "lookAhead" << (double)lookAhead << "fixedInterval" << (double)fixedInterval
+       << "frameWindow" << (double)frameWindow << "maxLifetime" << (double)maxLifetime << "activeDistance"
+       << activeDistance << "noiseActiveTime" << (double)noiseActiveTime;
+}
+
+void StereoMatcherParams::read(const FileNode& fn)
+{
+    auto num = [&](const char* key, double def) { return fn[key].empty() ? def : (double)fn[key]; };
+    if (!fn["mode"].empty())
+    {
+        const int m = findStereoMode((String)fn["mode"]);
+        if (m < 0)
+            CV_Error_(Error::StsParseError, ("StereoEventMatcher: unknown mode '%s'", ((String)fn["mode"]).c_str()));
+        setMode(m);
+    }
+    setSensorSize(Size((int)num("sensorWidth", sensorSize.width), (int)num("sensorHeight", sensorSize.height)));
+    setDisparityRange((int)num("minDisparity", minDisparity), (int)num("maxDisparity", maxDisparity));
+    setDescriptorWindow((int)num("descriptorWindow", descriptorWindow));
+    setMaxVectorLength((int)num("maxVectorLength", maxVectorLength));
+    setCostWindow((int)num("costWindow", costWindow));
+    setLifetimeWindow((int)num("lifetimeWindow", lifetimeWindow));
+    setAggregationWindow((int)num("aggregationWindow", aggregationWindow));
+    setUniquenessRatio((int)num("uniquenessRatio", uniquenessRatio));
+    setMinConfidence(num("minConfidence", minConfidence));
+    setMatchedLifetimeConfidence(num("matchedLifetimeConfidence", matchedLifetimeConfidence));
+    setLifetimeCopyConfidence(num("lifetimeCopyConfidence", lifetimeCopyConfidence));
+    setMaxLifetimeCopies((int)num("maxLifetimeCopies", maxLifetimeCopies));
+    setPriorTolerance((int)num("priorTolerance", priorTolerance));
+    setRecencyWeight((int)num("recencyWeight", recencyWeight));
+    setRecencyTime(num("recencyTime", (double)recencyTime));
+    setAveragingRadius((int)num("averagingRadius", averagingRadius));
+    setLookAhead(num("lookAhead", (double)lookAhead));
+    setFixedInterval(num("fixedInterval", (double)fixedInterval));
+    setFrameWindow(num("frameWindow", (double)frameWindow));
+    setMaxLifetime(num("maxLifetime", (double)maxLifetime));
+    setActiveDistance(num("activeDistance", activeDistance));
+    setNoiseActiveTime(num("noiseActiveTime", (double)noiseActiveTime));
+}
+
+}  // namespace detail
+}  // namespace event
+}  // namespace cv
