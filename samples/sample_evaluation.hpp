@@ -182,8 +182,9 @@ struct EvaluationTotals
     // --filter: what it kept of the motion's events, of the noise and of the flicker, and its own time.
     int64 filterSignalKept = 0, filterNoiseKept = 0, filterFlickerKept = 0;
     double filterSeconds = 0;
-    // Non-occluded signal events with a best estimate (no rejection): its confidence, and whether it is within 1 px.
-    std::vector<std::pair<float, bool>> ranked;
+    // Every event's best estimate (no rejection) with its confidence, for the precision at a density; empty bins
+    // for a method without a confidence.
+    StereoEventScores ranking;
     // The left events' estimated and true disparities of the last window (0: none), for the pictures.
     Mat lastEstimate, lastTruth;
 
@@ -229,9 +230,6 @@ struct EvaluationTotals
             if (flags & GT_FLAG_OCCLUDED)
                 continue;
             visibleMask[i] = 1;
-            if (!estimate.bestDisparity.empty() && estimate.bestDisparity[i] >= 0)
-                ranked.push_back(std::make_pair(estimate.bestConfidence[i],
-                                                std::abs(estimate.bestDisparity[i] - g[GT_DISPARITY]) <= 1.0));
             if (window[i].camera == CAMERA_LEFT)
                 lastTruth.at<float>(window[i].y, window[i].x) = g[GT_DISPARITY];
             if (!estimated)
@@ -255,6 +253,10 @@ struct EvaluationTotals
             scoreStereoEvents(window, disparity, truthRows, scores, depth);
             scoreStereoEvents(window, disparity, truthRows, visible, noArray(), visibleMask);
             scoreStereoEvents(window, disparity, truthRows, motion, noArray(), motionMask);
+            if (!estimate.bestDisparity.empty())
+                scoreStereoEvents(window, Mat((int)window.size(), 1, CV_32F, estimate.bestDisparity.data()), truthRows,
+                                  ranking, noArray(), noArray(),
+                                  Mat((int)window.size(), 1, CV_32F, estimate.bestConfidence.data()));
         }
     }
 
@@ -271,19 +273,6 @@ struct EvaluationTotals
         }
     }
 };
-
-// Precision (share within 1 px) of the most confident estimates that make up `density` % of the
-// non-occluded signal events; -1 when the estimates do not reach that density. `ranked` is sorted.
-inline double precisionAtDensity(const std::vector<std::pair<float, bool>>& ranked, int64 candidates, double density)
-{
-    const size_t n = (size_t)std::llround(density / 100.0 * (double)candidates);
-    if (n == 0 || n > ranked.size())
-        return -1;
-    size_t good = 0;
-    for (size_t i = 0; i < n; i++)
-        good += ranked[i].second;
-    return 100.0 * (double)good / (double)n;
-}
 
 }  // namespace sample_evaluation
 

@@ -20,10 +20,10 @@ namespace sample_evaluation {
 using namespace cv;
 using namespace cv::event;
 
-// The density-precision curve of the ranked estimates, with the method's own operating point (its
-// rejection threshold) marked.
-inline void drawDensityPrecision(const std::vector<std::pair<float, bool>>& ranked, int64 candidates, double density,
-                          double precision, const std::string& path, const std::string& title)
+// The density-precision curve of the estimates ranked by confidence (from the most confident bin down), with
+// the method's own operating point (its rejection threshold) marked.
+inline void drawDensityPrecision(const StereoEventScores& ranking, double density, double precision,
+                                 const std::string& path, const std::string& title)
 {
     const int w = 500, h = 300, left = 50, top = 40;
     Mat img(h + top + 50, w + left + 20, CV_8UC3, Scalar::all(255));
@@ -34,15 +34,15 @@ inline void drawDensityPrecision(const std::vector<std::pair<float, bool>>& rank
     rectangle(img, at(0, 100), at(100, lowest), Scalar(200, 200, 200));
     for (int p = 60; p < 100; p += 10)
         line(img, at(0, p), at(100, p), Scalar(235, 235, 235));
-    size_t good = 0;
+    double taken = 0, good = 0;
     Point previous(-1, -1);
-    const size_t step = std::max<size_t>(1, ranked.size() / 500);
-    for (size_t i = 0; i < ranked.size(); i++)
+    for (int b = (int)ranking.confidenceEstimated.size() - 1; b >= 0; b--)
     {
-        good += ranked[i].second;
-        if ((i + 1) % step != 0 && i + 1 != ranked.size())
+        taken += ranking.confidenceEstimated[(size_t)b];
+        good += ranking.confidenceWithin1[(size_t)b];
+        if (ranking.confidenceEstimated[(size_t)b] == 0)
             continue;
-        const Point q = at(100.0 * (double)(i + 1) / (double)candidates, 100.0 * (double)good / (double)(i + 1));
+        const Point q = at(100.0 * taken / ranking.visibleSignal, 100.0 * good / taken);
         if (previous.x >= 0)
             line(img, previous, q, Scalar(180, 90, 30), 2, LINE_AA);
         previous = q;

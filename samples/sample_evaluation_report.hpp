@@ -21,7 +21,7 @@ struct EvaluationReport
     bool disparities = false, lifetimes = false;  // what the method estimates
 };
 
-/** Writes the report of @p acc (its ranked estimates get sorted); @p filterPicture: the last window before and
+/** Writes the report of @p acc; @p filterPicture: the last window before and
 after the filter, or empty. */
 inline void writeEvaluationReport(const EvaluationReport& r, EvaluationTotals& acc, const Mat& filterPicture)
 {
@@ -48,12 +48,9 @@ inline void writeEvaluationReport(const EvaluationReport& r, EvaluationTotals& a
         recall = acc.noiseTrue ? std::to_string(share(acc.noiseCorrect, acc.noiseTrue)) : "n/a (no noise)";
     }
     // Precision at fixed densities, from the ranking by confidence (the most confident first).
-    std::stable_sort(acc.ranked.begin(), acc.ranked.end(),
-                     [](const std::pair<float, bool>& a, const std::pair<float, bool>& b) { return a.first > b.first; });
-    const double fullDensity = share((int64)acc.ranked.size(), candidates);
-    const double at50 = precisionAtDensity(acc.ranked, candidates, 50);
-    const double at75 = precisionAtDensity(acc.ranked, candidates, 75);
-    const double atFull = precisionAtDensity(acc.ranked, candidates, fullDensity);
+    const bool ranked = acc.ranking.estimated > 0 && !acc.ranking.confidenceEstimated.empty();
+    const double fullDensity = acc.ranking.density(), atFull = acc.ranking.precision();
+    const double at50 = acc.ranking.precisionAtDensity(50), at75 = acc.ranking.precisionAtDensity(75);
     auto percent = [](double v) { return v < 0 ? std::string("n/a") : cv::format("%.1f %%", v); };
     // Every key for every method, "n/a" where the method estimates no disparities (as for lifetimes).
     auto disparityValue = [&](auto value) {
@@ -137,9 +134,9 @@ inline void writeEvaluationReport(const EvaluationReport& r, EvaluationTotals& a
            << leftWrong << " / " << share(acc.leftAmbiguous, leftSignal) << " / "
            << share(acc.leftNoCounterpart, leftSignal) << " % |\n"
            << "| precision (within 1 px) of the most confident estimates at 50 / 75 % density | "
-           << (acc.ranked.empty() ? std::string("n/a (" + r.method + " has no confidence)") : percent(at50) + " / " + percent(at75)) << " |\n"
+           << (!ranked ? std::string("n/a (" + r.method + " has no confidence)") : percent(at50) + " / " + percent(at75)) << " |\n"
            << "| ... with no rejection (every event's best estimate): density, precision | "
-           << (acc.ranked.empty() ? std::string("n/a") : percent(fullDensity) + ", " + percent(atFull)) << " |\n"
+           << (!ranked ? std::string("n/a") : percent(fullDensity) + ", " + percent(atFull)) << " |\n"
            << "| mean absolute disparity error | " << mae << " px |\n"
            << "| mean relative depth error | " << relDepth << " % |\n";
     if (lifetimes)
@@ -160,9 +157,9 @@ inline void writeEvaluationReport(const EvaluationReport& r, EvaluationTotals& a
         md << "\n"
            << "![error histogram](disparity_error_histogram.png)\n\n"
            << "![estimate | ground truth](disparity_vs_truth.png)\n";
-        if (!acc.ranked.empty())
+        if (ranked)
         {
-            drawDensityPrecision(acc.ranked, candidates, density, within1, r.output + "/density_precision.png",
+            drawDensityPrecision(acc.ranking, density, within1, r.output + "/density_precision.png",
                                  "precision against density, ranked by confidence (" + r.method + ")");
             md << "\n![density-precision curve](density_precision.png)\n";
         }

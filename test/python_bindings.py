@@ -50,6 +50,16 @@ assert (scores.leftSignal, scores.leftWithin1, scores.visibleSignal, scores.esti
     (scores.leftSignal, scores.leftWithin1, scores.visibleSignal, scores.estimated, scores.within1)
 assert (scores.leftEstimated, scores.leftWithin2) == (2, 1), (scores.leftEstimated, scores.leftWithin2)
 assert abs(scores.absErrorSum - 0.5) < 1e-6, scores.absErrorSum
+# With confidences (1000 bins over 0..1), twice through the same scores: the estimated event (confidence 0.75)
+# lands in its bin both times, so the bins cross to Python and back.
+confidence = np.array([[0.75], [0.5], [0.0]], np.float32)
+ranking = ev.scoreStereoEvents(packet, np.array([[4.5], [7.0], [-1.0]], np.float32), packet_truth,
+                               ev.StereoEventScores(), None, None, confidence)
+ranking = ev.scoreStereoEvents(packet, np.array([[4.5], [7.0], [-1.0]], np.float32), packet_truth, ranking,
+                               None, None, confidence)
+bins = np.asarray(ranking.confidenceEstimated).ravel()
+assert len(bins) == 1000 and bins.sum() == 2 and bins[750] == 2, (len(bins), bins.sum())
+assert np.asarray(ranking.confidenceWithin1).ravel()[750] == 2
 
 # EventWriter -> EventCapture through a file.
 path = os.path.join(tempfile.mkdtemp(), "events.aedat4")

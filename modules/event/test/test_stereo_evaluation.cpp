@@ -112,4 +112,50 @@ TEST(Event_StereoEvaluation, refuses_outputs_that_do_not_fit_the_packet)
     EXPECT_EQ(0, s.visibleSignal) << "nothing counted from a refused packet";
 }
 
+TEST(Event_StereoEvaluation, precision_at_a_density_ranks_the_estimates_by_confidence)
+{
+    const HandMadePacket p;
+    // The estimated visible rows by confidence: 5 (1, within 1 px), 0 (0.9, within), 1 (0.8, 3 px off), 6 (0.2,
+    // 3 px off). Rows 2, 3, 4 and 7 are not estimated, occluded or noise: their confidences do not count.
+    const Mat confidence = (Mat_<float>(8, 1) << 0.9f, 0.8f, 0.f, 1.f, 1.f, 1.f, 0.2f, 1.f);
+    StereoEventScores s;
+    EXPECT_EQ(-1, s.precisionAtDensity(50)) << "no confidences given";
+    scoreStereoEvents(p.events, p.disparity, p.truth, s, noArray(), noArray(), confidence);
+    ASSERT_EQ((size_t)StereoEventScores::CONFIDENCE_BINS, s.confidenceEstimated.size());
+    EXPECT_EQ(1, s.confidenceEstimated[StereoEventScores::CONFIDENCE_BINS - 1]) << "a confidence of 1: the last bin";
+    EXPECT_EQ(1, s.confidenceWithin1[900]);
+    EXPECT_DOUBLE_EQ(100.0, s.precisionAtDensity(20));  // 1 of the 5 visible signal events: row 5
+    EXPECT_DOUBLE_EQ(100.0, s.precisionAtDensity(40));  // rows 5, 0
+    EXPECT_DOUBLE_EQ(200.0 / 3, s.precisionAtDensity(60));
+    EXPECT_DOUBLE_EQ(s.precision(), s.precisionAtDensity(80));  // all four estimates
+    EXPECT_EQ(-1, s.precisionAtDensity(100)) << "only 4 of the 5 have an estimate";
+    EXPECT_EQ(-1, s.precisionAtDensity(0));
+
+    // Rows 0 and 1 alike in confidence: the second of the two taken is half of that bin's, 1 of its 2 right ones.
+    Mat tied = confidence.clone();
+    tied.at<float>(0) = tied.at<float>(1) = 0.5f;
+    StereoEventScores t;
+    scoreStereoEvents(p.events, p.disparity, p.truth, t, noArray(), noArray(), tied);
+    EXPECT_DOUBLE_EQ(75.0, t.precisionAtDensity(40));
+    // A second packet adds to the bins.
+    scoreStereoEvents(p.events, p.disparity, p.truth, t, noArray(), noArray(), tied);
+    EXPECT_EQ(4, t.confidenceEstimated[500]);
+    EXPECT_DOUBLE_EQ(100.0, t.precisionAtDensity(20));  // 2 of 10: both row 5s
+
+    for (float bad : { 1.5f, -0.1f, std::numeric_limits<float>::quiet_NaN() })
+    {
+        Mat wrong = confidence.clone();
+        wrong.at<float>(6) = bad;
+        StereoEventScores before = s;
+        EXPECT_THROW(scoreStereoEvents(p.events, p.disparity, p.truth, s, noArray(), noArray(), wrong), cv::Exception)
+            << bad;
+        EXPECT_EQ(before.visibleSignal, s.visibleSignal) << "nothing counted from a refused packet";
+        EXPECT_EQ(before.confidenceEstimated, s.confidenceEstimated);
+    }
+    StereoEventScores odd;
+    odd.confidenceEstimated.assign(10, 0.0);
+    odd.confidenceWithin1.assign(10, 0.0);
+    EXPECT_THROW(scoreStereoEvents(p.events, p.disparity, p.truth, odd, noArray(), noArray(), confidence), cv::Exception);
+}
+
 }}  // namespace

@@ -29,22 +29,7 @@ struct Accuracy
 {
     double density = 0, within1 = 0, meanAbsError = 0, depthError = 0;
     int64 lifetimes[2] = { 0, 0 };
-    int64 candidates = 0;
-    std::vector<std::pair<float, bool>> estimates;  // confidence, within 1 px
-
-    // The share within 1 px [%] of the most confident estimates, as many as `density` % of the candidates
-    // (all estimates when there are fewer).
-    double within1AtDensity(double density) const
-    {
-        std::vector<std::pair<float, bool>> ranked = estimates;
-        std::stable_sort(ranked.begin(), ranked.end(),
-                         [](const std::pair<float, bool>& a, const std::pair<float, bool>& b) { return a.first > b.first; });
-        const size_t n = std::min(ranked.size(), (size_t)std::llround(density / 100.0 * (double)candidates));
-        int64 good = 0;
-        for (size_t i = 0; i < n; i++)
-            good += ranked[i].second;
-        return 100.0 * (double)good / (double)std::max<size_t>(1, n);
-    }
+    StereoEventScores scores;  // with the confidences
 };
 
 // Runs a matcher on `ms` of a simulated scene; accuracy over non-occluded signal events (with borderBand > 0:
@@ -72,14 +57,10 @@ Accuracy simulate(const std::string& scene, int mode, double ms, int borderBand 
                 a.lifetimes[e.camera]++;
             counted.at<uchar>(i) = borderBand == 0
                 || (e.camera == CAMERA_LEFT ? e.x >= sim->getSensorSize().width - borderBand : e.x < borderBand);
-            if (counted.at<uchar>(i) && !((int)gt.at<float>(i, GT_FLAGS) & (GT_FLAG_NOISE | GT_FLAG_OCCLUDED))
-                && d.at<float>(i) >= 0)
-                a.estimates.push_back(std::make_pair(confidence.at<float>(i),
-                                                     std::abs(d.at<float>(i) - gt.at<float>(i, GT_DISPARITY)) <= 1));
         }
-        scoreStereoEvents(ev, d, gt, scores, depth, counted);
+        scoreStereoEvents(ev, d, gt, scores, depth, counted, confidence);
     }
-    a.candidates = (int64)scores.visibleSignal;
+    a.scores = scores;
     a.density = scores.density();
     a.within1 = scores.precision();
     a.meanAbsError = scores.meanAbsError();
@@ -249,7 +230,7 @@ TEST(StereoEventMatcher, coupled_beats_frame_sgbm_on_textured_scenes)
         EXPECT_GE(coupled.density, sgbm.density) << s.scene;
         EXPECT_GE(coupled.density * coupled.within1 / 100, sgbm.density * sgbm.within1 / 100 + s.morePointsRight)
             << s.scene;
-        const double atSgbmDensity = coupled.within1AtDensity(sgbm.density);
+        const double atSgbmDensity = coupled.scores.precisionAtDensity(sgbm.density);
         EXPECT_GE(atSgbmDensity, sgbm.within1 - 0.15) << s.scene;
     }
 }

@@ -7,6 +7,8 @@
 
 #include "opencv2/event/types.hpp"
 
+#include <vector>
+
 namespace cv {
 namespace event {
 
@@ -18,7 +20,9 @@ with its ground truth), summed over the packets given to scoreStereoEvents().
 
 Two views of the same estimates: over the signal events of both cameras that the other camera sees
 (density, precision, error), and over every left signal event, occluded ones included (the matching rate,
-as event-stereo papers report it). Counts are doubles so that the struct crosses to Python as it is. */
+as event-stereo papers report it). Given the estimates' confidences, the first view is also kept per
+confidence bin, for the precision of the most confident estimates (precisionAtDensity()). Counts are doubles
+so that the struct crosses to Python as it is. */
 struct CV_EXPORTS_W_SIMPLE StereoEventScores
 {
     CV_WRAP StereoEventScores()
@@ -36,6 +40,13 @@ struct CV_EXPORTS_W_SIMPLE StereoEventScores
     CV_PROP_RW double leftEstimated;  //!< of those, the events with a disparity
     CV_PROP_RW double leftWithin1;    //!< of those, the disparities within 1 px of the truth
     CV_PROP_RW double leftWithin2;    //!< ... within 2 px of the truth (near misses: leftWithin2 - leftWithin1)
+    /** With confidences: the estimated ones of the visible signal events per confidence bin, CONFIDENCE_BINS
+        equal bins over 0..1 (bin i holds the confidences from i / CONFIDENCE_BINS up to the next bin's; the
+        last also holds 1). Empty until scoreStereoEvents() is given confidences. */
+    CV_PROP_RW std::vector<double> confidenceEstimated;
+    CV_PROP_RW std::vector<double> confidenceWithin1;  //!< of those, per bin, the ones within 1 px of the truth
+
+    enum { CONFIDENCE_BINS = 1000 };
 
     /** Estimated over visible signal events [%] (0 when there are none). */
     double density() const { return visibleSignal > 0 ? 100.0 * estimated / visibleSignal : 0.0; }
@@ -47,6 +58,11 @@ struct CV_EXPORTS_W_SIMPLE StereoEventScores
     double meanAbsError() const { return estimated > 0 ? absErrorSum / estimated : 0.0; }
     /** Mean relative depth error over the estimated events with a depth (0 when there are none). */
     double meanDepthError() const { return depthEstimated > 0 ? depthErrorSum / depthEstimated : 0.0; }
+    /** Precision at a density [%]: the share within 1 px of the most confident estimates, as many as
+        @p density % of the visible signal events (rounded to a whole event; within the confidence bin where
+        they end, that bin's share). -1 when the estimates with a confidence do not reach that many, or none
+        are wanted. */
+    double precisionAtDensity(double density) const;
 };
 
 /** @brief Adds one packet's estimates to @p scores.
@@ -60,12 +76,15 @@ StereoEventMatcher::process() gives it).
 |depth - true depth| / true depth over the estimated events whose true depth is positive and whose estimated
 depth is positive and finite (a disparity of 0 has none: StereoEventMatcher outputs 0 there).
 @param mask optional N x 1 CV_8U: only events with a non-zero entry count.
+@param confidence optional N x 1 CV_32F confidences in 0..1 (as StereoEventMatcher::process() gives them):
+the estimated visible signal events are also counted per confidence bin (StereoEventScores::confidenceEstimated).
 
-Sizes or types that disagree raise cv::Error::StsBadSize / StsBadArg naming the argument. An estimate is
-within 1 px when |disparity - truth| <= 1, compared in single precision. */
+Sizes or types that disagree, a confidence outside 0..1 and bins of @p scores of another size than
+CONFIDENCE_BINS raise cv::Error::StsBadSize / StsBadArg naming the argument; @p scores is then unchanged. An
+estimate is within 1 px when |disparity - truth| <= 1, compared in single precision. */
 CV_EXPORTS_W void scoreStereoEvents(InputArray events, InputArray disparity, InputArray groundTruth,
                                     CV_IN_OUT StereoEventScores& scores, InputArray depth = noArray(),
-                                    InputArray mask = noArray());
+                                    InputArray mask = noArray(), InputArray confidence = noArray());
 
 //! @}
 
