@@ -25,6 +25,22 @@ int64 duration(double us, const char* what)
     return (int64)std::llround(us);
 }
 
+// A share from 0 to 1; @p zero says what 0 means.
+double share(double c, const char* what, const char* zero)
+{
+    if (!(c >= 0 && c <= 1))
+        CV_Error_(Error::StsBadArg, ("StereoEventMatcher: %s %g; must be 0..1 (0: %s)", what, c, zero));
+    return c;
+}
+
+// A time from 0 to 1 s in microseconds; @p zero says what 0 means.
+int64 upToOneSecond(double us, const char* what, const char* zero)
+{
+    if (!(us >= 0 && us <= 1e6))
+        CV_Error_(Error::StsBadArg, ("StereoEventMatcher: %s %g us; must be 0..1e6 us (0: %s)", what, us, zero));
+    return (int64)std::llround(us);
+}
+
 }  // namespace
 
 void StereoMatcherParams::setMode(int m)
@@ -86,26 +102,17 @@ void StereoMatcherParams::setUniquenessRatio(int u)
 
 void StereoMatcherParams::setMinConfidence(double c)
 {
-    if (!(c >= 0 && c <= 1))
-        CV_Error_(Error::StsBadArg, ("StereoEventMatcher: minimum confidence %g; must be 0..1 (0: every event with a "
-                                     "candidate keeps its best disparity)", c));
-    minConfidence = c;
+    minConfidence = share(c, "minimum confidence", "every event with a candidate keeps its best disparity");
 }
 
 void StereoMatcherParams::setMatchedLifetimeConfidence(double c)
 {
-    if (!(c >= 0 && c <= 1))
-        CV_Error_(Error::StsBadArg, ("StereoEventMatcher: matched lifetime confidence %g; must be 0..1 (0: every match "
-                                     "passes its counterpart's lifetime)", c));
-    matchedLifetimeConfidence = c;
+    matchedLifetimeConfidence = share(c, "matched lifetime confidence", "every match passes its counterpart's lifetime");
 }
 
 void StereoMatcherParams::setLifetimeCopyConfidence(double c)
 {
-    if (!(c >= 0 && c <= 1))
-        CV_Error_(Error::StsBadArg, ("StereoEventMatcher: lifetime copy confidence %g; must be 0..1 (0: every match "
-                                     "passes its lifetime on)", c));
-    lifetimeCopyConfidence = c;
+    lifetimeCopyConfidence = share(c, "lifetime copy confidence", "every match passes its lifetime on");
 }
 
 void StereoMatcherParams::setMaxLifetimeCopies(int copies)
@@ -148,10 +155,7 @@ void StereoMatcherParams::setAveragingRadius(int px)
 
 void StereoMatcherParams::setLookAhead(double us)
 {
-    if (!(us >= 0 && us <= 1e6))
-        CV_Error_(Error::StsBadArg, ("StereoEventMatcher: look-ahead %g us; must be 0..1e6 us (0: each event is decided "
-                                     "when it arrives)", us));
-    lookAhead = (int64)std::llround(us);
+    lookAhead = upToOneSecond(us, "look-ahead", "each event is decided when it arrives");
 }
 
 void StereoMatcherParams::setFixedInterval(double us)
@@ -171,10 +175,7 @@ void StereoMatcherParams::setMaxLifetime(double us)
 
 void StereoMatcherParams::setNoiseActiveTime(double us)
 {
-    if (!(us >= 0 && us <= 1e6))
-        CV_Error_(Error::StsBadArg, ("StereoEventMatcher: noise active time %g us; must be 0..1e6 us (0: an event "
-                                     "without a lifetime is not active)", us));
-    noiseActiveTime = (int64)std::llround(us);
+    noiseActiveTime = upToOneSecond(us, "noise active time", "an event without a lifetime is not active");
 }
 
 void StereoMatcherParams::setActiveDistance(double px)
