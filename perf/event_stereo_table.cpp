@@ -1,9 +1,9 @@
 // The paper's Table I, reproduced: per scene, the events that keep a lifetime and the processing time of
 // DECOUPLED and COUPLED stereo, measured in the same run: the lifetime estimation alone, as the paper times it
 // (StereoEventMatcher::setTimeLifetimes), and the whole matcher, each with its COUPLED / DECOUPLED ratio; next
-// to them FIXED_INTERVAL and FRAME_SGBM, and, where ground truth exists, density and share within 1 px.
-// A second table gives, per mode, Mev/s, the per-event latency percentiles (p50 / p99, each event timed on
-// its own through processEvent; FRAME_SGBM: per 33 ms window, as its events wait for their window) and the
+// to them FIXED_INTERVAL and frames + SGBM (FrameStereoMatcher), and, where ground truth exists, density and
+// share within 1 px. A second table gives, per method, Mev/s, the per-event latency percentiles (p50 / p99, each
+// event timed on its own through processEvent; SGBM: per 33 ms window, as its events wait for their window) and the
 // memory the matcher added (peak resident memory during the run minus the resident memory before it).
 // A third table gives COUPLED and DECOUPLED through process() in 33 ms windows on each of --threads (row
 // bands, StereoEventMatcher::setNumThreads): Mev/s, the speed-up over one thread, and whether every output
@@ -58,7 +58,7 @@ struct Result
     double lifetimeSeconds = 0;  // the lifetime estimation alone (StereoEventMatcher::setTimeLifetimes)
     int64 withLifetime = 0, withDisparity = 0;
     StereoEventScores scores;  // simulated recordings only
-    double p50 = 0, p99 = 0;  // latency per event [us] (FRAME_SGBM: per window)
+    double p50 = 0, p99 = 0;  // latency per event [us] (SGBM: per window)
     double addedMiB = 0;      // peak resident memory during the run minus before it
 };
 
@@ -138,7 +138,16 @@ Ptr<StereoEventMatcher> createMatcher(const Recording& rec, int mode, const std:
     return m;
 }
 
-Result run(const Recording& rec, int mode, const std::string& settings)
+// The results' index of frames + SGBM, after the three StereoMatchModes.
+const int FRAME_BASELINE = 3;
+
+std::string methodName(int method)
+{
+    return method == FRAME_BASELINE ? std::string("sgbm") : getStereoModeName(method);
+}
+
+// A StereoMatchMode event by event, or FRAME_BASELINE window by window.
+Result run(const Recording& rec, int method, const std::string& settings)
 {
     Result r;
     Mat d, lt, fl;
@@ -148,16 +157,23 @@ Result run(const Recording& rec, int mode, const std::string& settings)
     latency.clear();  // keeps the capacity
     bench::resetPeakResident();
     const double before = bench::residentMiB("VmRSS:");
-    Ptr<StereoEventMatcher> m = createMatcher(rec, mode, settings);
-    m->setTimeLifetimes(true);
+    Ptr<StereoEventMatcher> m;
+    Ptr<FrameStereoMatcher> frames;
+    if (method == FRAME_BASELINE)
+        frames = FrameStereoMatcher::create(rec.size);
+    else
+    {
+        m = createMatcher(rec, method, settings);
+        m->setTimeLifetimes(true);
+    }
     StereoEventEstimate est;
     for (size_t w = 0; w < rec.windows.size(); w++)
     {
         const std::vector<Event>& ev = rec.windows[w];
-        if (mode == STEREO_FRAME_SGBM)
+        if (frames)
         {
             const auto t0 = std::chrono::steady_clock::now();
-            m->process(ev, d, lt, fl);
+            frames->process(ev, d, fl);
             const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
             r.seconds += s;
             latency.push_back((float)(s * 1e6));
@@ -187,7 +203,7 @@ Result run(const Recording& rec, int mode, const std::string& settings)
         if (!rec.truth.empty())
             scoreStereoEvents(ev, d, rec.truth[w], r.scores);
     }
-    r.lifetimeSeconds = m->getLifetimeSeconds();
+    r.lifetimeSeconds = m ? m->getLifetimeSeconds() : 0;
     r.p50 = percentile(latency, 0.5);
     r.p99 = percentile(latency, 0.99);
     latency = std::vector<float>();
@@ -358,13 +374,13 @@ int main(int argc, char** argv)
             std::cerr << "running " << rec.name << " (" << rec.events << " events)...\n";
             Result res[4];
             for (int k = 0; k < repeat; k++)
-                for (int mode = STEREO_COUPLED; mode <= STEREO_FRAME_SGBM; mode++)
+                for (int method = STEREO_COUPLED; method <= FRAME_BASELINE; method++)
                 {
-                    const Result r = run(rec, mode, settings);
+                    const Result r = run(rec, method, settings);
                     if (k == 0)
-                        res[mode] = r;
+                        res[method] = r;
                     else
-                        res[mode] = fastest(res[mode], r);
+                        res[method] = fastest(res[method], r);
                 }
             const Result& c = res[STEREO_COUPLED];
             const Result& d = res[STEREO_DECOUPLED];
@@ -372,12 +388,12 @@ int main(int argc, char** argv)
             decoupledSeconds += d.seconds;
             coupledLifetime += c.lifetimeSeconds;
             decoupledLifetime += d.lifetimeSeconds;
-            for (int mode = STEREO_COUPLED; mode <= STEREO_FRAME_SGBM; mode++)
-                speed << "| " << rec.name << " | " << getStereoModeName(mode) << " | "
-                      << num((double)rec.events / std::max(1e-12, res[mode].seconds) / 1e6, 3) << " | "
-                      << num(res[mode].p50, 1) << (mode == STEREO_FRAME_SGBM ? " us / window" : " us") << " | "
-                      << num(res[mode].p99, 1) << (mode == STEREO_FRAME_SGBM ? " us / window" : " us") << " | "
-                      << num(res[mode].addedMiB, 1) << " MiB |\n";
+            for (int method = STEREO_COUPLED; method <= FRAME_BASELINE; method++)
+                speed << "| " << rec.name << " | " << methodName(method) << " | "
+                      << num((double)rec.events / std::max(1e-12, res[method].seconds) / 1e6, 3) << " | "
+                      << num(res[method].p50, 1) << (method == FRAME_BASELINE ? " us / window" : " us") << " | "
+                      << num(res[method].p99, 1) << (method == FRAME_BASELINE ? " us / window" : " us") << " | "
+                      << num(res[method].addedMiB, 1) << " MiB |\n";
             auto accuracy = [&](const Result& r) {
                 return rec.truth.empty() ? pct(r.withDisparity, rec.events) + " of all"
                                          : num(r.scores.density(), 1) + " % / " + num(r.scores.precision(), 1) + " %";
@@ -387,7 +403,7 @@ int main(int argc, char** argv)
                   << " / " << num(c.seconds * 1e3, 0) << " ms | **" << num(c.lifetimeSeconds / std::max(1e-12, d.lifetimeSeconds), 2)
                   << "** | " << num(c.seconds / std::max(1e-12, d.seconds), 2) << " | " << num((double)rec.events / c.seconds / 1e6, 3)
                   << " | " << accuracy(c) << " | " << accuracy(d) << " | " << accuracy(res[STEREO_FIXED_INTERVAL]) << " | "
-                  << accuracy(res[STEREO_FRAME_SGBM]) << " |\n";
+                  << accuracy(res[FRAME_BASELINE]) << " |\n";
             for (int mode : { (int)STEREO_COUPLED, (int)STEREO_DECOUPLED })
             {
                 std::vector<Mat> first, outputs;

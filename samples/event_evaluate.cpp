@@ -2,12 +2,12 @@
 //
 //   event_evaluate [--scene=NAME --duration-ms=MS | --input=REC [--gt=REC.gt.csv]] [--method=coupled]
 //                  [--window-ms=33] [--output=DIR] [--set=PARAM=VALUE[,PARAM=VALUE...]]
-//   methods: coupled (the default), decoupled, fixed, sgbm (StereoEventMatcher modes), lifetime, none
+//   methods: coupled (the default), decoupled, fixed (StereoEventMatcher modes), sgbm, lifetime, none
 //
 // Ground truth comes from the simulator (a named scene, simulated in memory) or from the side file that
 // writeSimulatedRecording() writes (`t,x,y,p,camera,depth,disparity,flow_x,flow_y,lifetime,flags`).
-// Methods: the StereoEventMatcher modes (`sgbm` = what users do today, dv-processing's semi-dense matcher:
-// edge frames per window + cv::StereoSGBM), with --set for matcher parameters (FileStorage names, e.g.
+// Methods: the StereoEventMatcher modes and `sgbm` (FrameStereoMatcher: what users do today, dv-processing's
+// semi-dense matcher: edge frames per window + cv::StereoSGBM), with --set for their parameters (FileStorage names, e.g.
 // --set=uniquenessRatio=20,costWindow=7, lifetimeEstimator.inlierDistance=0 for its lifetime estimator);
 // `lifetime` = LifetimeEstimator per camera (lifetime and noise metrics, no disparity; --set takes its names).
 //
@@ -61,7 +61,7 @@ const char* const keys =
     "{duration-ms | 500        | length of the simulated scene [ms]}"
     "{input       |            | a recording with per-event ground truth beside it}"
     "{gt          |            | the ground truth file; default: the recording's name + .gt.csv}"
-    "{method      | coupled    | coupled, decoupled, fixed, sgbm (StereoEventMatcher modes), lifetime, or none (evaluates --filter alone)}"
+    "{method      | coupled    | coupled, decoupled, fixed (StereoEventMatcher modes), sgbm (frames + StereoSGBM, FrameStereoMatcher), lifetime, or none (evaluates --filter alone)}"
     "{filter      |            | a noise filter in front of the method: background_activity, trail, refractory, hot_pixels, anti_flicker}"
     "{filter-set  |            | filter parameters NAME=VALUE, comma separated (FileStorage names, e.g. correlationTime=5000)}"
     "{window-ms   | 33         | evaluation window (and SGBM frame) [ms]}"
@@ -119,7 +119,7 @@ int main(int argc, char** argv)
         o.sensorSettings = cmd.get<std::string>("sensor-set");
         o.filter = cmd.get<std::string>("filter");
         o.filterSettings = cmd.get<std::string>("filter-set");
-        if (o.method != "lifetime" && o.method != "none" && findStereoMode(o.method) < 0)
+        if (o.method != "lifetime" && o.method != "none" && !StereoMethod::known(o.method))
             throw std::runtime_error("--method=" + o.method + ": available methods: coupled, decoupled, fixed, sgbm, lifetime, none");
         if (!utils::fs::createDirectories(o.output))
             throw std::runtime_error(o.output + ": cannot create the output folder");
@@ -163,7 +163,7 @@ int main(int argc, char** argv)
         else if (o.method == "lifetime")
             method.reset(new Lifetime(size, o.settings));
         else
-            method.reset(new Matcher(size, findStereoMode(o.method), o.windowMs * 1000, o.settings));
+            method.reset(new Matcher(size, o.method, o.windowMs * 1000, o.settings));
         MethodOutput estimate;
         EvaluationTotals acc;
         std::vector<Event> window;

@@ -1,19 +1,17 @@
-// event_stereo: per-event stereo disparity, depth and lifetime (StereoEventMatcher) on a stereo recording, a
-// live stereo DAVIS pair, or the simulator's built-in scene; the main job of this project.
+// event_stereo: per-event stereo disparity, depth and lifetime (StereoEventMatcher, or FrameStereoMatcher with
+// --mode=sgbm) on a stereo recording, a live stereo DAVIS pair, or a simulated scene; this project's main job.
 //
 //   event_stereo [--input=FILE | --left=FILE --right=FILE | --live [--live-ms=MS]] [--record=FILE] [--calib=FILE] [--sensor=WxH]
 //                [--left-camera-value=0|1] [--one-based] [--right-time-offset-ms=MS|auto] [--mode=coupled|decoupled|fixed|sgbm]
 //                [--min-disparity=PX] [--max-disparity=PX] [--frame-ms=MS] [--threads=N] [--no-csv]
 //                [--all-frames] [--output=DIR] [--set=NAME=VALUE,...] [--scene=NAME --duration-ms=MS]
-//                [--filter=NAME [--filter-set=NAME=VALUE,...]]
-//                (no input: simulate, with ground truth)
+//                [--filter=NAME [--filter-set=NAME=VALUE,...]]        (no input: simulate, with ground truth)
 //
 // Writes into DIR: events.csv (t,x,y,p,camera,disparity,depth,lifetime,flags,confidence per event, x/y rectified),
 // disparity.avi with one frame per --frame-ms window when a video writer is available (left | right active
 // events coloured by disparity, the paper's Figure 1; plus the ground truth below when simulated), the same
 // picture as disparity_NNNNN.png (NNNNN: the window) for the first window and one per eighth of the run
-// (--all-frames: every window),
-// disparity_histogram.png and summary.md (events/s, share with disparity and with lifetime, dominant
+// (--all-frames: every window), disparity_histogram.png and summary.md (events/s, share with disparity and with lifetime, dominant
 // disparity, the quartiles of the left estimates' confidence, input events outside the sensor or going back
 // in time, the right camera's clock against the left one's (estimated and applied by default), the pair
 // check, and errors against the ground truth when simulated). Progress, and warnings when the pair's rows are
@@ -33,6 +31,7 @@
 #include "sample_stereo_pictures.hpp"
 #include "sample_stereo_source.hpp"
 #include "sample_stereo_tally.hpp"
+#include "stereo_method.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -53,9 +52,7 @@ struct Options : StereoSourceOptions
     std::string calib, output, mode, settings, filter, filterSettings, record;
     bool csv = true, allFrames = false;
     int minDisparity = 0, maxDisparity = 0;
-    // Row bands on their own threads (StereoEventMatcher::setNumThreads): the same results as one thread, but
-    // little faster wherever the events crowd around the bands' boundary (a figure or an object in the middle
-    // of the view, most real scenes), so one thread unless asked.
+    // Row bands (setNumThreads): one thread unless asked, as they gain little where events crowd mid-view.
     int threads = 1;
     bool estimateClock = true;  // --right-time-offset-ms=auto: estimateClockOffset() on the first seconds
 };
@@ -73,10 +70,10 @@ const char* const keys =
     "{left-camera-value | 0          | the camera column's value that means left, in text recordings}"
     "{one-based         | false      | text recordings count pixels from 1}"
     "{right-time-offset-ms | auto    | added to the right camera's timestamps [ms]; auto: estimated from the first seconds of events (estimateClockOffset) and applied when the events are clear about it}"
-    "{mode              | coupled    | coupled, decoupled, fixed or sgbm}"
+    "{mode              | coupled    | coupled, decoupled, fixed (StereoEventMatcher) or sgbm (frames + StereoSGBM, FrameStereoMatcher)}"
     "{min-disparity     | 0          | smallest disparity searched [px]}"
     "{max-disparity     | 40         | largest disparity searched [px]}"
-    "{frame-ms          | 33         | window of one video frame [ms]}"
+    "{frame-ms          | 33         | window of one video frame (and of one frame of sgbm) [ms]}"
     "{threads           | 1          | row bands on their own threads (the same results; on two cores little faster on realistic scenes: Threads in doc/stereo.md); 0: the CPUs, at most 4}"
     "{no-csv            | false      | do not write events.csv}"
     "{all-frames        | false      | a PNG for every window, not a handful}"
@@ -130,8 +127,8 @@ bool parse(int argc, char** argv, Options& o)
     o.settings = cmd.get<std::string>("set");
     o.filter = cmd.get<std::string>("filter");
     o.filterSettings = cmd.get<std::string>("filter-set");
-    if (findStereoMode(o.mode) < 0)
-        throw std::runtime_error("--mode=" + o.mode + ": use coupled, decoupled, fixed or sgbm");
+    if (!StereoMethod::known(o.mode))
+        throw std::runtime_error("--mode=" + o.mode + ": use " + StereoMethod::names());
     if ((o.left.empty()) != (o.right.empty()))
         throw std::runtime_error("--left and --right go together");
     if (!(o.frameMs > 0))
@@ -163,18 +160,20 @@ int main(int argc, char** argv)
         if (size.empty())
             throw sensorSizeMissing(source.name());
 
-        Ptr<StereoEventMatcher> matcher = StereoEventMatcher::create(size, findStereoMode(opt.mode));
-        matcher->setMinDisparity(opt.minDisparity);
-        matcher->setMaxDisparity(opt.maxDisparity);
-        matcher->setNumThreads(opt.threads);
-        applyMatcherSettings(matcher, opt.settings);
+        StereoMethod method(opt.mode, size);
+        method.setDisparityRange(opt.minDisparity, opt.maxDisparity);
+        if (method.matcher)
+            method.matcher->setNumThreads(opt.threads);
+        else
+            method.frames->setFrameWindow(opt.frameMs * 1000);
+        method.applySettings(opt.settings);
         Ptr<EventFilter> filter = createSampleFilter(opt.filter, opt.filterSettings, size);
         if (!opt.calib.empty())
-            matcher->loadCalibration(opt.calib);
+            method.setCalibration(readStereoCalibration(opt.calib));
         else if (source.hasTruth())
         {
             const SimulatorSettings& s = source.simulator()->getSettings();
-            matcher->setCalibration(StereoCalibration::fromRectified(size, s.focalLength, s.baseline));
+            method.setCalibration(StereoCalibration::fromRectified(size, s.focalLength, s.baseline));
         }
 
         std::ofstream csv;
@@ -219,7 +218,7 @@ int main(int argc, char** argv)
             }
             pairCheck.add(packet);
             const int64 t0 = getTickCount();
-            matcher->process(packet, disparity, lifetime, flags, depth, noArray(), confidence);
+            method.process(packet, disparity, lifetime, flags, depth, confidence);
             seconds += (double)(getTickCount() - t0) / getTickFrequency();
             tally.add(packet, disparity, flags, confidence, source.hasTruth() ? truth : Mat());
             if (source.hasTruth())
@@ -239,7 +238,7 @@ int main(int argc, char** argv)
                 }
             }
 
-            const Mat picture = sampleEnlarge(stereoWindowPicture(matcher, windowEnd - 1, truthDisparity, opt.minDisparity, opt.maxDisparity), zoom);
+            const Mat picture = sampleEnlarge(stereoWindowPicture(method, windowEnd - 1, truthDisparity, opt.minDisparity, opt.maxDisparity), zoom);
             if (opt.allFrames || sampleIsPictureWindow(windows, source.progress(), lastEighth))
             {
                 imwrite(opt.output + cv::format("/disparity_%05lld.png", (long long)windows), picture);
@@ -279,7 +278,7 @@ int main(int argc, char** argv)
              << "| row alignment of the pair (estimateRowAlignment, " << pairCheck.span() << ") | " << pairCheck.rowResult() << " |\n"
              << "| disparity the pair's events line up at (estimateDominantDisparity, " << pairCheck.span() << ") | "
              << pairCheck.disparityResult() << " |\n"
-             << tally.disparityRows(opt.mode != "sgbm");
+             << tally.disparityRows(method.hasConfidence());
         if (source.hasTruth())
             text << tally.truthRows();
         text << "| outputs | " << (opt.csv ? "events.csv, " : "") << pictures << " of " << windows

@@ -1,4 +1,4 @@
-// What event_evaluate runs and sums: the methods it evaluates (StereoEventMatcher modes, LifetimeEstimator, none)
+// What event_evaluate runs and sums: the methods it evaluates (the stereo methods, LifetimeEstimator, none)
 // and the totals of their estimates against per-event ground truth.
 
 #ifndef OPENCV_EVENT_SAMPLES_SAMPLE_EVALUATION_HPP
@@ -7,10 +7,12 @@
 #include <opencv2/event.hpp>
 
 #include "algorithm_settings.hpp"
+#include "stereo_method.hpp"
 
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <memory>
 #include <string>
 #include <utility>
 #include <vector>
@@ -46,30 +48,31 @@ public:
     }
 };
 
-// A StereoEventMatcher mode: COUPLED / DECOUPLED / FIXED_INTERVAL per event, FRAME_SGBM per window (the
-// windows here are the matcher's frame windows, so each frame gets exactly one window of events).
+// A stereo method (StereoMethod: a StereoEventMatcher mode per event, or frames + SGBM per window; the windows
+// here are the frame baseline's, so each frame gets exactly one window of events).
 class Matcher CV_FINAL : public Method
 {
 public:
-    Matcher(Size size, int mode, double windowUs, const std::string& settings) : matcher_(StereoEventMatcher::create(size, mode))
+    Matcher(Size size, const std::string& name, double windowUs, const std::string& settings) : method_(name, size)
     {
-        matcher_->setFrameWindow(windowUs);
-        applyMatcherSettings(matcher_, settings);
+        if (method_.frames)
+            method_.frames->setFrameWindow(windowUs);
+        method_.applySettings(settings);
         // Without rejection (the default) the run itself gives every event's best estimate.
-        if (mode != STEREO_FRAME_SGBM && matcher_->getMinConfidence() > 0)
+        if (method_.matcher && method_.matcher->getMinConfidence() > 0)
         {
-            unfiltered_ = StereoEventMatcher::create(size, mode);
-            applyMatcherSettings(unfiltered_, settings);
-            unfiltered_->setMinConfidence(0);
+            unfiltered_.reset(new StereoMethod(name, size));
+            unfiltered_->applySettings(settings);
+            unfiltered_->matcher->setMinConfidence(0);
         }
     }
 
     void process(const std::vector<Event>& window, MethodOutput& out) CV_OVERRIDE
     {
         Mat disparity, lifetime, flags, confidence;
-        matcher_->process(window, disparity, lifetime, flags, noArray(), noArray(), confidence);
+        method_.process(window, disparity, lifetime, flags, noArray(), confidence);
         out.hasDisparity = true;
-        out.hasLifetime = matcher_->getMode() == STEREO_COUPLED || matcher_->getMode() == STEREO_DECOUPLED;
+        out.hasLifetime = method_.hasLifetime();
         out.disparity.assign(disparity.begin<float>(), disparity.end<float>());
         out.lifetime.assign(lifetime.begin<float>(), lifetime.end<float>());
         out.flags.assign(flags.begin<int>(), flags.end<int>());
@@ -78,22 +81,23 @@ public:
 
     void processUnfiltered(const std::vector<Event>& window, MethodOutput& out) CV_OVERRIDE
     {
-        if (!unfiltered_ && matcher_->getMode() != STEREO_FRAME_SGBM)
+        if (!method_.hasConfidence())
+            return Method::processUnfiltered(window, out);
+        if (!unfiltered_)
         {
             out.bestDisparity = out.disparity;
             out.bestConfidence = out.confidence;
             return;
         }
-        if (!unfiltered_)
-            return Method::processUnfiltered(window, out);
         Mat disparity, confidence;
-        unfiltered_->process(window, disparity, noArray(), noArray(), noArray(), noArray(), confidence);
+        unfiltered_->process(window, disparity, noArray(), noArray(), noArray(), confidence);
         out.bestDisparity.assign(disparity.begin<float>(), disparity.end<float>());
         out.bestConfidence.assign(confidence.begin<float>(), confidence.end<float>());
     }
 
 private:
-    Ptr<StereoEventMatcher> matcher_, unfiltered_;
+    StereoMethod method_;
+    std::unique_ptr<StereoMethod> unfiltered_;
 };
 
 // Lifetime per camera (LifetimeEstimator, plane fitting); no disparity.

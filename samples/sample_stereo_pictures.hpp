@@ -6,6 +6,8 @@
 #include <opencv2/event.hpp>
 #include <opencv2/imgproc.hpp>
 
+#include "stereo_method.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -27,12 +29,12 @@ inline bool sampleIsPictureWindow(int64_t window, double fraction, int& lastEigh
 
 // Left | right active events coloured by disparity; below, when simulated, the true disparity of the window's
 // left events.
-inline cv::Mat stereoWindowPicture(const cv::Ptr<cv::event::StereoEventMatcher>& matcher, double t,
+inline cv::Mat stereoWindowPicture(const StereoMethod& method, double t,
                                    const cv::Mat& truthDisparity, int minDisparity, int maxDisparity)
 {
     cv::Mat left, right, row;
-    matcher->renderDisparity(t, left, cv::event::CAMERA_LEFT, false);
-    matcher->renderDisparity(t, right, cv::event::CAMERA_RIGHT, true);
+    method.renderDisparity(t, left, cv::event::CAMERA_LEFT, false);
+    method.renderDisparity(t, right, cv::event::CAMERA_RIGHT, true);
     cv::hconcat(left, right, row);
     if (truthDisparity.empty())
         return row;

@@ -134,7 +134,15 @@ matcher.process(stereo)
 assert matcher.getTimeLifetimes() and matcher.getLifetimeSeconds() > 0
 matcher.reset()
 assert matcher.getLifetimeSeconds() == 0
-assert ev.getStereoModeName(ev.STEREO_DECOUPLED) == "decoupled" and ev.findStereoMode("SGBM") == ev.STEREO_FRAME_SGBM
+assert ev.getStereoModeName(ev.STEREO_DECOUPLED) == "decoupled" and ev.findStereoMode("Fixed") == ev.STEREO_FIXED_INTERVAL
+assert ev.findStereoMode("sgbm") == -1
+# The frame baseline: its own class, the same input, SGBM's disparities per event, shown for one frame window.
+frames = ev.FrameStereoMatcher_create((64, 24))
+frames.setFrameWindow(20000.0)
+frame_disparity, frame_flags, frame_depth = frames.process(stereo)
+assert frame_disparity.shape == (len(events), 1) and frame_flags.dtype == np.int32
+assert np.array_equal(frame_disparity.ravel() >= 0, (frame_flags.ravel() & ev.STEREO_HAS_DISPARITY) != 0)
+assert frames.getActiveDisparity(float(events[-1][0])).shape == (24, 64)
 matcher.process(stereo)
 picture = matcher.renderDisparity(float(events[-1][0]))
 assert picture.shape[0] == 24 and picture.shape[2] == 3

@@ -6,26 +6,47 @@
 
 namespace opencv_test { namespace {
 
-// The whole stereo pipeline per mode on one 33 ms window of the simulator's two_planes scene (240 x 180),
+// The whole stereo pipeline per mode, and the frame baseline, on one 33 ms window of the simulator's two_planes scene (240 x 180),
 // after 66 ms of warm-up so that the descriptors and lifetimes are in their steady state. Divide by the
 // window's event count (printed by the Table I program, perf/event_stereo_table) for time per event.
-typedef TestBaseWithParam<int> Event_StereoMatcher_Window;
-
-PERF_TEST_P(Event_StereoMatcher_Window, two_planes,
-            testing::Values((int)STEREO_COUPLED, (int)STEREO_DECOUPLED, (int)STEREO_FIXED_INTERVAL, (int)STEREO_FRAME_SGBM))
+Size twoPlanesWindows(std::vector<Event>& warmUp, std::vector<Event>& window)
 {
     Ptr<StereoEventSimulator> sim = StereoEventSimulator::create("two_planes");
-    std::vector<Event> warmUp, window;
     Mat gt;
     sim->generate(66000, warmUp, gt);
     sim->generate(99000, window, gt);
-    Ptr<StereoEventMatcher> m = StereoEventMatcher::create(sim->getSensorSize(), GetParam());
+    return sim->getSensorSize();
+}
+
+typedef TestBaseWithParam<int> Event_StereoMatcher_Window;
+
+PERF_TEST_P(Event_StereoMatcher_Window, two_planes,
+            testing::Values((int)STEREO_COUPLED, (int)STEREO_DECOUPLED, (int)STEREO_FIXED_INTERVAL))
+{
+    std::vector<Event> warmUp, window;
+    const Size size = twoPlanesWindows(warmUp, window);
+    Ptr<StereoEventMatcher> m = StereoEventMatcher::create(size, GetParam());
     Mat disparity, lifetime;
     TEST_CYCLE()
     {
         m->reset();
         m->process(warmUp, disparity, lifetime);
         m->process(window, disparity, lifetime);
+    }
+    SANITY_CHECK_NOTHING();
+}
+
+PERF_TEST(Event_FrameStereoMatcher_Window, two_planes)
+{
+    std::vector<Event> warmUp, window;
+    const Size size = twoPlanesWindows(warmUp, window);
+    Ptr<FrameStereoMatcher> m = FrameStereoMatcher::create(size);
+    Mat disparity;
+    TEST_CYCLE()
+    {
+        m->reset();
+        m->process(warmUp, disparity);
+        m->process(window, disparity);
     }
     SANITY_CHECK_NOTHING();
 }

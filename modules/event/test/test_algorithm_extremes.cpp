@@ -15,7 +15,6 @@
 
 namespace opencv_test { namespace {
 
-const int kStereoModes[] = { STEREO_COUPLED, STEREO_DECOUPLED, STEREO_FIXED_INTERVAL, STEREO_FRAME_SGBM };
 
 // Uniform background activity on both sensors: every pixel fires at random, independently of the others.
 std::vector<Event> uniformNoise(Size size, int count, double meanGapUs, int64 t0, uint64 seed, bool stereo)
@@ -107,19 +106,18 @@ TEST(Event_Extremes, noise_only_input_gives_finite_outputs_and_mostly_noise)
     EXPECT_GE(noise, 0.9 * lt.rows) << "uniform noise should mostly stay without a plane";
 
     const std::vector<Event> stereo = uniformNoise(size, 40000, 5.0, 1000, 8, true);
-    for (int mode : kStereoModes)
+    for (int method : kStereoMethods)
     {
-        Ptr<StereoEventMatcher> m = StereoEventMatcher::create(size, mode);
-        m->setCalibration(StereoCalibration::fromRectified(size, 200, 0.1));
+        StereoMethod m(size, method);
+        m.setCalibration(StereoCalibration::fromRectified(size, 200, 0.1));
         Mat d, slt, flags, depth, sflow;
-        m->process(stereo, d, slt, flags, depth, sflow);
-        expectSaneStereoOutputs(stereo, d, slt, flags, depth, sflow, m->getMinDisparity(), m->getMaxDisparity(),
-                                getStereoModeName(mode));
+        m.process(stereo, d, slt, flags, depth, sflow);
+        expectSaneStereoOutputs(stereo, d, slt, flags, depth, sflow, 0, 40, m.name());
         for (int i = 0; i < d.rows; i++)
         {
             if (d.at<float>(i) > 0)
             {
-                ASSERT_GT(depth.at<float>(i), 0.f) << getStereoModeName(mode) << ": event " << i;
+                ASSERT_GT(depth.at<float>(i), 0.f) << m.name() << ": event " << i;
             }
         }
     }
@@ -163,15 +161,18 @@ TEST(Event_Extremes, all_events_at_one_pixel)
         stereo.push_back(Event(firstTime + 100 * i, 20, 10, POLARITY_ON, CAMERA_LEFT));
         stereo.push_back(Event(firstTime + 100 * i, 14, 10, POLARITY_ON, CAMERA_RIGHT));
     }
-    for (int mode : kStereoModes)
+    for (int mode : kStereoMethods)
     {
-        Ptr<StereoEventMatcher> m = StereoEventMatcher::create(size, mode);
-        m->setLookAhead(0);  // decided on arrival: an event sees only the events before it
-        m->setNoiseActiveTime(0);  // the paper: an event without a lifetime is inactive after the cold start
+        StereoMethod m(size, mode);
+        if (m.matcher)
+        {
+            m.matcher->setLookAhead(0);  // decided on arrival: an event sees only the events before it
+            m.matcher->setNoiseActiveTime(0);  // the paper: an event without a lifetime is inactive after the cold start
+        }
         Mat d, slt, flags, depth, sflow;
-        m->process(stereo, d, slt, flags, depth, sflow);
-        const std::string name = getStereoModeName(mode);
-        expectSaneStereoOutputs(stereo, d, slt, flags, depth, sflow, m->getMinDisparity(), m->getMaxDisparity(), name);
+        m.process(stereo, d, slt, flags, depth, sflow);
+        const std::string name = m.name();
+        expectSaneStereoOutputs(stereo, d, slt, flags, depth, sflow, 0, 40, name);
         int matched = 0, matchedAfterColdStart = 0;
         for (int i = 0; i < d.rows; i++)
             if (d.at<float>(i) >= 0)
@@ -222,25 +223,25 @@ TEST(Event_Extremes, single_event_and_empty_packets)
     est->renderActiveEvents(123456, img);
     EXPECT_EQ(countNonZero(img), 0) << "a noise event is never active";
 
-    for (int mode : kStereoModes)
+    for (int mode : kStereoMethods)
     {
-        const std::string name = getStereoModeName(mode);
-        Ptr<StereoEventMatcher> m = StereoEventMatcher::create(size, mode);
+        StereoMethod m(size, mode);
+        const std::string name = m.name();
         Mat d, lt, flags;
-        m->process(std::vector<Event>(), d, lt, flags);
+        m.process(std::vector<Event>(), d, lt, flags);
         EXPECT_EQ(d.rows, 0) << name;
-        m->process(std::vector<Event>(1, one), d, lt, flags);
+        m.process(std::vector<Event>(1, one), d, lt, flags);
         ASSERT_EQ(d.rows, 1) << name;
         EXPECT_EQ(lt.at<float>(0), 0.f) << name;
         Mat render;
-        m->renderDisparity(123456, render, CAMERA_LEFT, false);
+        m.renderDisparity(123456, render, CAMERA_LEFT, false);
         EXPECT_EQ(render.size(), size) << name;
-        if (mode == STEREO_FRAME_SGBM)
+        if (m.frames)
         {
             // The baseline is StereoSGBM as users run it: against an empty right frame every disparity costs
             // the same and SGBM returns its first one, minDisparity. Kept as it is, so that the comparison
             // with the event methods is honest.
-            EXPECT_EQ(d.at<float>(0), (float)m->getMinDisparity()) << name;
+            EXPECT_EQ(d.at<float>(0), (float)m.frames->getMinDisparity()) << name;
             continue;
         }
         EXPECT_EQ(d.at<float>(0), (float)StereoEventMatcher::NO_DISPARITY) << name;
@@ -257,7 +258,7 @@ TEST(Event_Extremes, results_do_not_depend_on_where_time_starts)
     const std::vector<Event> mono = sweepingEdge(size, 0, 0, false);
     const std::vector<Event> stereo = sweepingEdge(size, 5, 0, true);
     const int64 span = mono.back().t + 1;
-    // Multiples of FRAME_SGBM's 33 ms window, so that its windows cut the edge where they cut it at 0.
+    // Multiples of the frame baseline's 33 ms window, so that its windows cut the edge where they cut it at 0.
     const int64 w = 33000;
     const int64 starts[] = {
         (std::numeric_limits<int64>::max() - span) / w * w,  // the last representable microseconds
@@ -271,7 +272,7 @@ TEST(Event_Extremes, results_do_not_depend_on_where_time_starts)
     ASSERT_GT(countNonZero(lt0), (int)mono.size() / 2) << "the reference run should find planes";
     Mat d0[4], slt0[4];
     for (int k = 0; k < 4; k++)
-        StereoEventMatcher::create(size, kStereoModes[k])->process(stereo, d0[k], slt0[k]);
+        StereoMethod(size, kStereoMethods[k]).process(stereo, d0[k], slt0[k]);
 
     for (int64 start : starts)
     {
@@ -296,9 +297,10 @@ TEST(Event_Extremes, results_do_not_depend_on_where_time_starts)
         for (int k = 0; k < 4; k++)
         {
             Mat d, slt;
-            StereoEventMatcher::create(size, kStereoModes[k])->process(shifted(stereo, start), d, slt);
-            EXPECT_EQ(cvtest::norm(d, d0[k], NORM_INF), 0.0) << getStereoModeName(kStereoModes[k]);
-            EXPECT_EQ(cvtest::norm(slt, slt0[k], NORM_INF), 0.0) << getStereoModeName(kStereoModes[k]);
+            StereoMethod m(size, kStereoMethods[k]);
+            m.process(shifted(stereo, start), d, slt);
+            EXPECT_EQ(cvtest::norm(d, d0[k], NORM_INF), 0.0) << m.name();
+            EXPECT_EQ(cvtest::norm(slt, slt0[k], NORM_INF), 0.0) << m.name();
         }
     }
 }
@@ -334,15 +336,15 @@ TEST(Event_Extremes, a_long_gap_forgets_the_past)
     const Size size(48, 16);
     const std::vector<Event> edge = sweepingEdge(size, 5, 0, true);
     std::vector<Event> twice = edge;
-    const int64 gap = (edge.back().t + ((int64)1 << 32)) / 33000 * 33000;  // FRAME_SGBM windows line up
+    const int64 gap = (edge.back().t + ((int64)1 << 32)) / 33000 * 33000;  // the frame baseline's windows line up
     const std::vector<Event> later = shifted(edge, gap);
     twice.insert(twice.end(), later.begin(), later.end());
-    for (int mode : kStereoModes)
+    for (int mode : kStereoMethods)
     {
-        const std::string name = getStereoModeName(mode);
+        const std::string name = StereoMethod(size, mode).name();
         Mat dOnce, ltOnce, dTwice, ltTwice;
-        StereoEventMatcher::create(size, mode)->process(edge, dOnce, ltOnce);
-        StereoEventMatcher::create(size, mode)->process(twice, dTwice, ltTwice);
+        StereoMethod(size, mode).process(edge, dOnce, ltOnce);
+        StereoMethod(size, mode).process(twice, dTwice, ltTwice);
         const Range second((int)edge.size(), (int)twice.size());
         EXPECT_EQ(cvtest::norm(dTwice.rowRange(second), dOnce, NORM_INF), 0.0) << name;
         EXPECT_EQ(cvtest::norm(ltTwice.rowRange(second), ltOnce, NORM_INF), 0.0) << name;
@@ -367,10 +369,10 @@ TEST(Event_Extremes, state_does_not_grow_with_the_number_of_events)
 #else
     const Size size(240, 180);
     const int packet = 10000;
-    for (int mode : kStereoModes)
+    for (int mode : kStereoMethods)
     {
-        const std::string name = getStereoModeName(mode);
-        Ptr<StereoEventMatcher> m = StereoEventMatcher::create(size, mode);
+        StereoMethod m(size, mode);
+        const std::string name = m.name();
         Ptr<EventSurface> surface = EventSurface::create(size);
         Mat d, lt, flags;
         size_t afterFew = 0;
@@ -380,7 +382,7 @@ TEST(Event_Extremes, state_does_not_grow_with_the_number_of_events)
             // Noise on both sensors: every packet activates, matches and expires events all over the sensor.
             std::vector<Event> ev = uniformNoise(size, packet, 2.0, t0, (uint64)k + 1, true);
             t0 = ev.back().t + 1;
-            m->process(ev, d, lt, flags);
+            m.process(ev, d, lt, flags);
             surface->update(ev);
             if (k == 2)
                 afterFew = heapInUse();

@@ -10,6 +10,7 @@
 #include "test_common.hpp"
 #include "test_event_helpers.hpp"
 #include "test_simulator_helpers.hpp"
+#include "test_stereo_methods.hpp"
 
 #include <cstdio>
 #include <map>

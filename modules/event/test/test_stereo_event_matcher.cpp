@@ -32,23 +32,23 @@ struct Accuracy
     StereoEventScores scores;  // with the confidences
 };
 
-// Runs a matcher on `ms` of a simulated scene; accuracy over non-occluded signal events (with borderBand > 0:
+// Runs a stereo method (a StereoMatchMode or FRAME_BASELINE) on `ms` of a simulated scene; accuracy over non-occluded signal events (with borderBand > 0:
 // only those within borderBand px of the outer border, the right one of the left image and the left one of the
 // right image, where the scene seen by one sensor leaves the other's view).
 Accuracy simulate(const std::string& scene, int mode, double ms, int borderBand = 0)
 {
     Ptr<StereoEventSimulator> sim = StereoEventSimulator::create(scene);
-    Ptr<StereoEventMatcher> m = StereoEventMatcher::create(sim->getSensorSize(), mode);
-    m->setCalibration(StereoCalibration::fromRectified(sim->getSensorSize(), sim->getSettings().focalLength,
-                                                       sim->getSettings().baseline));
+    StereoMethod m(sim->getSensorSize(), mode);
+    m.setCalibration(StereoCalibration::fromRectified(sim->getSensorSize(), sim->getSettings().focalLength,
+                                                      sim->getSettings().baseline));
     Accuracy a;
     StereoEventScores scores;
     std::vector<Event> ev;
     Mat gt, d, lt, fl, depth, confidence, counted;
-    for (double t = 33000; t <= ms * 1000 + 1; t += 33000)  // windows: what FRAME_SGBM needs, the same for all
+    for (double t = 33000; t <= ms * 1000 + 1; t += 33000)  // the frame baseline's windows, the same for all
     {
         sim->generate(t, ev, gt);
-        m->process(ev, d, lt, fl, depth, noArray(), confidence);
+        m.process(ev, d, lt, fl, depth, noArray(), confidence);
         counted.create((int)ev.size(), 1, CV_8U);
         for (int i = 0; i < (int)ev.size(); i++)
         {
@@ -226,7 +226,7 @@ TEST(StereoEventMatcher, coupled_beats_frame_sgbm_on_textured_scenes)
     for (const auto& s : scenes)
     {
         const Accuracy coupled = simulate(s.scene, STEREO_COUPLED, 264);
-        const Accuracy sgbm = simulate(s.scene, STEREO_FRAME_SGBM, 264);
+        const Accuracy sgbm = simulate(s.scene, FRAME_BASELINE, 264);
         EXPECT_GE(coupled.density, sgbm.density) << s.scene;
         EXPECT_GE(coupled.density * coupled.within1 / 100, sgbm.density * sgbm.within1 / 100 + s.morePointsRight)
             << s.scene;
@@ -331,7 +331,7 @@ TEST(StereoEventMatcher, coupled_lifetimes_passed_on_without_limit_keep_the_star
 TEST(StereoEventMatcher, coupled_leads_frame_sgbm_by_ten_points_on_the_near_walker)
 {
     const Accuracy coupled = simulate("walking_near", STEREO_COUPLED, 495);
-    const Accuracy sgbm = simulate("walking_near", STEREO_FRAME_SGBM, 495);
+    const Accuracy sgbm = simulate("walking_near", FRAME_BASELINE, 495);
     const double coupledRate = coupled.density * coupled.within1 / 100, sgbmRate = sgbm.density * sgbm.within1 / 100;
     EXPECT_GE(coupledRate, 85.0);
     EXPECT_GE(coupledRate, sgbmRate + 10);
@@ -437,20 +437,9 @@ TEST(StereoEventMatcher, lifetime_time_is_counted_only_when_on_and_changes_no_ou
 
 TEST(StereoEventMatcher, bad_input_raises_errors_that_name_the_event)
 {
-    Ptr<StereoEventMatcher> m = StereoEventMatcher::create(Size(64, 48));
-    auto message = [&](const std::vector<Event>& ev) -> std::string {
-        m->reset();
-        try
-        {
-            Mat d;
-            m->process(ev, d);
-        }
-        catch (const cv::Exception& e)
-        {
-            return e.what();
-        }
-        return "";
-    };
+    StereoMethod method(Size(64, 48), STEREO_COUPLED);
+    const Ptr<StereoEventMatcher> m = method.matcher;
+    auto message = [&](const std::vector<Event>& ev) { return processingError(method, ev); };
     const std::string back = message({ Event(2000, 1, 1, 1, 0), Event(1000, 2, 2, 1, 1) });
     EXPECT_NE(back.find("t=1000"), std::string::npos) << back;
     EXPECT_NE(back.find("time order"), std::string::npos) << back;
@@ -460,9 +449,7 @@ TEST(StereoEventMatcher, bad_input_raises_errors_that_name_the_event)
     const std::string camera = message({ Event(1000, 1, 1, 1, 2) });
     EXPECT_NE(camera.find("camera 2"), std::string::npos) << camera;
 
-    m->setMode(STEREO_FRAME_SGBM);
-    StereoEventEstimate s;
-    EXPECT_THROW(m->processEvent(Event(1000, 1, 1, 1, 0), s), cv::Exception);
+    EXPECT_THROW(m->setMode(3), cv::Exception);  // frames + SGBM are FrameStereoMatcher's
     EXPECT_THROW(m->setMaxDisparity(-1), cv::Exception);
     EXPECT_THROW(m->setCostWindow(4), cv::Exception);
     EXPECT_THROW(m->setLifetimeWindow(4), cv::Exception);

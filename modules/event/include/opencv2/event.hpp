@@ -17,6 +17,7 @@
 #include "opencv2/event/stereo_calibration.hpp"
 #include "opencv2/event/stereo_pair_check.hpp"
 #include "opencv2/event/stereo_event_matcher.hpp"
+#include "opencv2/event/frame_stereo_matcher.hpp"
 #include "opencv2/event/stereo_evaluation.hpp"
 
 /** @defgroup event Event cameras: lifetime and stereo disparity

@@ -10,6 +10,7 @@
 #include "lifetime/neighbour_along_motion.hpp"
 #include "lifetime/plane_inliers.hpp"
 #include "common/timestamp_math.hpp"
+#include "common/optional_output.hpp"
 #include "common/sensor_bounds.hpp"
 
 #include <Eigen/Dense>
@@ -38,18 +39,8 @@ public:
         const int n = (int)ev.total();
         lifetimes.create(n, 1, CV_32F);
         Mat_<float> lt = lifetimes.getMat();
-        Mat_<float> fl;
-        Mat_<uchar> st;
-        if (flow.needed())
-        {
-            flow.create(n, 2, CV_32F);
-            fl = flow.getMat();
-        }
-        if (status.needed())
-        {
-            status.create(n, 1, CV_8U);
-            st = status.getMat();
-        }
+        Mat_<float> fl = optionalOutput<float>(flow, n, 2);
+        Mat_<uchar> st = optionalOutput<uchar>(status, n);
         for (int i = 0; i < n; i++)
         {
             Vec2f v;

@@ -9,7 +9,6 @@
 #include "precomp.hpp"
 #include "common/timestamp_math.hpp"
 #include "stereo/stereo_event_matcher_impl.hpp"
-#include "common/sensor_bounds.hpp"
 
 namespace cv {
 namespace event {
@@ -145,8 +144,7 @@ void StereoEventMatcherImpl::processAdmitted(const Event& e, Point r, int64 cold
     if (est.disparity >= 0)
     {
         est.flags |= STEREO_HAS_DISPARITY;
-        if (est.disparity > 0 && focalBaseline_ != 0)
-            est.depth = (float)(focalBaseline_ / est.disparity);
+        est.depth = input_.depthOf(est.disparity);
     }
     if (est.lifetime > 0)
     {
@@ -180,30 +178,14 @@ int64 StereoEventMatcherImpl::activeSpan(double lifetime) const
 
 Point StereoEventMatcherImpl::admit(const Event& e)
 {
-    if (e.camera > 1)
-        CV_Error_(Error::StsBadArg, ("StereoEventMatcher: event (t=%lld us, x=%d, y=%d) has camera %d; a stereo "
-                                     "stream has CAMERA_LEFT (0) and CAMERA_RIGHT (1)", (long long)e.t, e.x, e.y, e.camera));
-    if (!onSensor(e.x, e.y, params_.sensorSize))
-        CV_Error_(Error::StsOutOfRange, ("StereoEventMatcher: event at (x=%d, y=%d), t=%lld us, camera %d, is outside "
-                                         "the %d x %d sensor", e.x, e.y, (long long)e.t, e.camera, params_.sensorSize.width, params_.sensorSize.height));
-    if (e.t == EventSurface::NO_EVENT)
-        CV_Error_(Error::StsOutOfRange, ("StereoEventMatcher: event (x=%d, y=%d, camera %d) has t = INT64_MIN, which is "
-                                         "reserved for EventSurface::NO_EVENT", e.x, e.y, e.camera));
-    if (e.t < lastTime_)
-        CV_Error_(Error::StsBadArg, ("StereoEventMatcher: event at t=%lld us (x=%d, y=%d, camera %d) is earlier than the "
-                                     "previous one (t=%lld us): events of both sensors must come merged in time order "
-                                     "(mergeStereoEvents, EventCapture::openStereo)", (long long)e.t, e.x, e.y,
-                                     e.camera, (long long)lastTime_));
+    const int64 previous = input_.lastTime();
+    const Point r = input_.admit(e);
     // The stream starts, or resumes after a gap longer than the plane fit's time window: the surfaces hold
     // no usable history, and the cold start (processEvent) runs for one time window.
     const int64 window = (int64)std::min(estimators_[e.camera]->getTimeWindow(), 1e18);
-    if (lastTime_ == std::numeric_limits<int64>::min() || e.t > timeAfter(lastTime_, window))
+    if (previous == std::numeric_limits<int64>::min() || e.t > timeAfter(previous, window))
         coldStartEnd_ = timeAfter(e.t, window);
-    lastTime_ = e.t;
-    if (lut_[e.camera].empty())
-        return Point(e.x, e.y);
-    const int r = lut_[e.camera][(size_t)e.y * params_.sensorSize.width + e.x];
-    return r < 0 ? Point(-1, -1) : Point(r % params_.sensorSize.width, r / params_.sensorSize.width);
+    return r;
 }
 
 }  // namespace detail

@@ -11,8 +11,8 @@ namespace cv {
 namespace event {
 namespace detail {
 
-/** The frame baseline (STEREO_FRAME_SGBM), as dv-processing's semi-dense stereo matcher does it: per time
-window each sensor's events are accumulated into an edge frame (+64 per event, saturating, like its
+/** FrameStereoMatcher's frames and SGBM, as dv-processing's semi-dense stereo matcher does it: per time window
+each sensor's events are accumulated into an edge frame (+64 per event, saturating, like its
 EdgeMapAccumulator with contribution 0.25), cv::StereoSGBM with dv-processing's defaults computes the left
 disparity map, the right one from the mirrored pair, and every event takes its pixel's disparity.
 Windows are aligned to multiples of the window length; a window's frames persist across calls, so a window
@@ -20,10 +20,12 @@ split over several packets is computed from the events seen so far. */
 class FrameSgbmMatcher
 {
 public:
+    // The camera of an event outside the rectified image: it takes no part.
+    enum { NOT_IN_IMAGE = 255 };
+
     void configure(Size size, int minDisparity, int maxDisparity, int64 windowUs);
     void reset();
-    // Disparity per event (-1: none) for rectified, time-ordered events; events with a camera above 1 (the
-    // caller's mark for "outside the rectified image") take no part and get none.
+    // Disparity per event (-1: none) for rectified, time-ordered events; those of camera NOT_IN_IMAGE get none.
     void process(const std::vector<Point>& pixels, const std::vector<int64>& times, const std::vector<uchar>& cameras,
                  std::vector<float>& disparity);
 

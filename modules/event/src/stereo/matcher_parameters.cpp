@@ -23,13 +23,7 @@ void StereoEventMatcherImpl::setSensorSize(Size s)
     params_.setSensorSize(s);
     for (const Ptr<RowBandLifetimeEstimator>& est : estimators_)
         est->setSensorSize(s);
-    if (!calibration_.empty() && calibration_.imageSize != s)
-    {
-        calibration_ = StereoCalibration();
-        lut_[0].clear();
-        lut_[1].clear();
-        focalBaseline_ = 0;
-    }
+    input_.setSensorSize(s);
     reset();
 }
 
@@ -46,10 +40,10 @@ void StereoEventMatcherImpl::write(FileStorage& fs) const
     fs << "lifetimeEstimator" << "{";
     estimators_[0]->write(fs);
     fs << "}";
-    if (!calibration_.empty())
+    if (!input_.calibration().empty())
     {
         fs << "calibration" << "{";
-        calibration_.write(fs);
+        input_.calibration().write(fs);
         fs << "}";
     }
 }

@@ -2,13 +2,14 @@
 // It is subject to the license terms in the LICENSE file found in the top-level directory
 // of this distribution and at http://opencv.org/license.html.
 
-// StereoEventMatcher's public face: construction, process() over a packet (event by event, by look-ahead and
-// row bands in operation_schedule.cpp, or as frames for FRAME_SGBM), processEvent(), reset() and calibration.
+// StereoEventMatcher's public face: construction, process() over a packet (event by event, or by look-ahead and
+// row bands in operation_schedule.cpp), processEvent(), reset(), calibration and the active estimates' maps.
 // The method is described in the public header.
 
 #include "precomp.hpp"
 #include "common/ascii.hpp"
-#include "stereo/rectification_table.hpp"
+#include "common/optional_output.hpp"
+#include "stereo/disparity_rendering.hpp"
 #include "stereo/stereo_event_matcher_impl.hpp"
 
 namespace cv {
@@ -29,33 +30,10 @@ void StereoEventMatcherImpl::process(InputArray events, OutputArray disparity, O
     Mat_<Event> ev = getEventMat(events);
     const int n = (int)ev.total();
     disparity.create(n, 1, CV_32F);
-    Mat_<float> disp = disparity.getMat(), lt, dep, fl, conf;
-    Mat_<int> fla;
-    if (lifetime.needed())
-    {
-        lifetime.create(n, 1, CV_32F);
-        lt = lifetime.getMat();
-    }
-    if (flags.needed())
-    {
-        flags.create(n, 1, CV_32S);
-        fla = flags.getMat();
-    }
-    if (depth.needed())
-    {
-        depth.create(n, 1, CV_32F);
-        dep = depth.getMat();
-    }
-    if (flow.needed())
-    {
-        flow.create(n, 2, CV_32F);
-        fl = flow.getMat();
-    }
-    if (confidence.needed())
-    {
-        confidence.create(n, 1, CV_32F);
-        conf = confidence.getMat();
-    }
+    Mat_<float> disp = disparity.getMat();
+    Mat_<float> lt = optionalOutput<float>(lifetime, n), dep = optionalOutput<float>(depth, n);
+    Mat_<float> fl = optionalOutput<float>(flow, n, 2), conf = optionalOutput<float>(confidence, n);
+    Mat_<int> fla = optionalOutput<int>(flags, n);
     auto store = [&](int i, const StereoEventEstimate& s) {
         disp(i) = s.disparity;
         if (!conf.empty())
@@ -72,11 +50,6 @@ void StereoEventMatcherImpl::process(InputArray events, OutputArray disparity, O
             fl(i, 1) = s.flow[1];
         }
     };
-    if (params_.mode == STEREO_FRAME_SGBM)
-    {
-        processFrames(ev, store);
-        return;
-    }
     if (params_.lookAhead > 0 || (params_.numThreads > 1 && n >= MIN_EVENTS_FOR_BANDS))
     {
         processOperations(ev, store);
@@ -92,9 +65,6 @@ void StereoEventMatcherImpl::process(InputArray events, OutputArray disparity, O
 
 void StereoEventMatcherImpl::processEvent(const Event& e, StereoEventEstimate& est)
 {
-    if (params_.mode == STEREO_FRAME_SGBM)
-        CV_Error(Error::StsNotImplemented, "StereoEventMatcher: FRAME_SGBM works on windows of events; use process() "
-                                           "with whole windows (processEvent is for the per-event modes)");
     est = StereoEventEstimate();
     const Point r = admit(e);
     est.rectified = r;
@@ -119,8 +89,7 @@ void StereoEventMatcherImpl::reset()
         estimates_[c].reset(params_.sensorSize);
         pendingEvents_[c].assign((size_t)params_.sensorSize.area() * 2, 0);
     }
-    frames_.configure(params_.sensorSize, params_.minDisparity, params_.maxDisparity, params_.frameWindow);
-    lastTime_ = std::numeric_limits<int64>::min();
+    input_.restart();
     sizeScratch(scratch_);
     scratch_.lifetimeTicks = 0;
     for (MatchScratch& s : bandScratch_)
@@ -156,24 +125,7 @@ void StereoEventMatcherImpl::sizeScratch(MatchScratch& s) const
 
 void StereoEventMatcherImpl::setCalibration(const StereoCalibration& calibration)
 {
-    if (calibration.empty())
-    {
-        calibration_ = StereoCalibration();
-        for (std::vector<int>& l : lut_)
-            l.clear();
-        focalBaseline_ = 0;
-        reset();
-        return;
-    }
-    calibration.validate();
-    if (calibration.imageSize != params_.sensorSize)
-        CV_Error_(Error::StsBadArg, ("StereoEventMatcher: the calibration is for %d x %d sensors but the matcher's "
-                                     "sensor is %d x %d", calibration.imageSize.width, calibration.imageSize.height,
-                                     params_.sensorSize.width, params_.sensorSize.height));
-    for (int c = 0; c < 2; c++)
-        lut_[c] = buildRectificationTable(calibration, c);
-    calibration_ = calibration;
-    focalBaseline_ = calibration.focalLength() * calibration.baseline();
+    input_.setCalibration(calibration);
     reset();
 }
 
@@ -184,41 +136,18 @@ Ptr<LifetimeEstimator> StereoEventMatcherImpl::getLifetimeEstimator(int camera) 
     return estimators_[camera];
 }
 
-void StereoEventMatcherImpl::processFrames(const Mat_<Event>& ev, const StoreFn& store)
+void StereoEventMatcherImpl::getActiveDisparity(double t, OutputArray disparity, int camera) const
 {
-    const int n = (int)ev.total();
-    std::vector<Point> pixels((size_t)n);
-    std::vector<int64> times((size_t)n);
-    std::vector<uchar> cameras((size_t)n);
-    for (int i = 0; i < n; i++)
-    {
-        const Point r = admit(ev(i));
-        pixels[(size_t)i] = r;
-        times[(size_t)i] = ev(i).t;
-        cameras[(size_t)i] = r.x < 0 ? 255 : ev(i).camera;
-    }
-    std::vector<float> disparity;
-    frames_.process(pixels, times, cameras, disparity);
-    for (int i = 0; i < n; i++)
-    {
-        StereoEventEstimate s;
-        s.rectified = pixels[(size_t)i];
-        if (cameras[(size_t)i] > 1)
-            s.flags = STEREO_OUTSIDE;
-        else
-        {
-            s.disparity = disparity[(size_t)i];
-            if (s.disparity >= 0)
-            {
-                s.flags = STEREO_HAS_DISPARITY;
-                s.confidence = 1.f;
-                if (s.disparity > 0 && focalBaseline_ != 0)
-                    s.depth = (float)(focalBaseline_ / s.disparity);
-            }
-            estimates_[cameras[(size_t)i]].remember(s.rectified, times[(size_t)i], params_.frameWindow, s.disparity);
-        }
-        store(i, s);
-    }
+    activeDisparityMap(estimates_, params_.sensorSize, t, camera,
+                       "StereoEventMatcher::getActiveDisparity", disparity);
+}
+
+void StereoEventMatcherImpl::renderDisparity(double t, OutputArray image, int camera, bool colourBar) const
+{
+    Mat_<float> disparity;
+    activeDisparityMap(estimates_, params_.sensorSize, t, camera,
+                       "StereoEventMatcher::renderDisparity", disparity);
+    renderDisparityMap(disparity, params_.minDisparity, params_.maxDisparity, colourBar, image);
 }
 
 }  // namespace detail
@@ -235,7 +164,6 @@ String getStereoModeName(int mode)
     case STEREO_COUPLED: return "coupled";
     case STEREO_DECOUPLED: return "decoupled";
     case STEREO_FIXED_INTERVAL: return "fixed";
-    case STEREO_FRAME_SGBM: return "sgbm";
     default: CV_Error_(Error::StsBadArg, ("getStereoModeName: mode %d is not a StereoMatchMode", mode));
     }
 }
@@ -243,7 +171,7 @@ String getStereoModeName(int mode)
 int findStereoMode(const String& name)
 {
     const std::string n = detail::toLowerAscii(name);
-    for (int m = STEREO_COUPLED; m <= STEREO_FRAME_SGBM; m++)
+    for (int m = STEREO_COUPLED; m <= STEREO_FIXED_INTERVAL; m++)
         if (n == getStereoModeName(m))
             return m;
     return -1;

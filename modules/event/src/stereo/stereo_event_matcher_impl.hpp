@@ -9,8 +9,8 @@
 #include "lifetime/row_band_lifetime_estimator.hpp"
 #include "stereo/active_estimate_map.hpp"
 #include "stereo/descriptor_cost.hpp"
-#include "stereo/frame_sgbm_matcher.hpp"
 #include "stereo/row_band_scheduler.hpp"
+#include "stereo/stereo_event_input.hpp"
 #include "stereo/stereo_matcher_params.hpp"
 #include "stereo/window_median.hpp"
 #include "stereo/zou_descriptor_map.hpp"
@@ -82,7 +82,7 @@ public:
     void reset() CV_OVERRIDE;
     void setCalibration(const StereoCalibration& calibration) CV_OVERRIDE;
 
-    const StereoCalibration& getCalibration() const CV_OVERRIDE { return calibration_; }
+    const StereoCalibration& getCalibration() const CV_OVERRIDE { return input_.calibration(); }
     void loadCalibration(const String& path) CV_OVERRIDE { setCalibration(readStereoCalibration(path)); }
 
     Ptr<LifetimeEstimator> getLifetimeEstimator(int camera) const CV_OVERRIDE;
@@ -129,8 +129,6 @@ public:
     void setLookAhead(double us) CV_OVERRIDE { params_.setLookAhead(us); }
     double getFixedInterval() const CV_OVERRIDE { return (double)params_.fixedInterval; }
     void setFixedInterval(double us) CV_OVERRIDE { params_.setFixedInterval(us); }
-    double getFrameWindow() const CV_OVERRIDE { return (double)params_.frameWindow; }
-    void setFrameWindow(double us) CV_OVERRIDE { params_.setFrameWindow(us); reset(); }
     double getMaxLifetime() const CV_OVERRIDE { return (double)params_.maxLifetime; }
     void setMaxLifetime(double us) CV_OVERRIDE { params_.setMaxLifetime(us); }
     double getNoiseActiveTime() const CV_OVERRIDE { return (double)params_.noiseActiveTime; }
@@ -153,9 +151,6 @@ private:
 
     // ---- the public face (stereo_event_matcher.cpp)
     void sizeScratch(MatchScratch& s) const;
-
-    // FRAME_SGBM: the packet as frames of the frame window matched by StereoSGBM (FrameSgbmMatcher).
-    void processFrames(const Mat_<Event>& ev, const StoreFn& store);
 
     // ---- the per-event decision (event_decision.cpp)
     // processEvent after admit() and the expiries due: the event at rectified pixel r, inside the image.
@@ -321,19 +316,11 @@ private:
     // The lifetimeWindow around (x, y), clipped to the image: the window matchedLifetime reads.
     Rect lifetimeWindowAround(int x, int y) const;
 
-    // ---- rendering (disparity_rendering.cpp)
-    Mat colourLut() const;
-
-    int colourIndex(float d) const;
     StereoMatcherParams params_;
-    StereoCalibration calibration_;
-    std::vector<int> lut_[2];  // raw pixel -> rectified pixel index (-1: outside); empty: no calibration
-    double focalBaseline_ = 0;
+    StereoEventInput input_{ "StereoEventMatcher" };  // the checks, the rectification, the depth
     Ptr<RowBandLifetimeEstimator> estimators_[2];
     ZouDescriptorMap maps_[2];
-    FrameSgbmMatcher frames_;
     ActiveEstimateMap estimates_[2];  // each event's own estimate, as its neighbours read it
-    int64 lastTime_ = std::numeric_limits<int64>::min();
     int64 coldStartEnd_ = 0;  // the end of the cold start: see admit()
     // The cost kernel for this CPU (candidates' costs and window masses), fetched once.
     DescriptorRectSadBatchFn rectSadBatch_ = descriptorRectSadBatchFunction();

@@ -45,8 +45,9 @@ int64 upToOneSecond(double us, const char* what, const char* zero)
 
 void StereoMatcherParams::setMode(int m)
 {
-    if (m < STEREO_COUPLED || m > STEREO_FRAME_SGBM)
-        CV_Error_(Error::StsBadArg, ("StereoEventMatcher: mode %d; use a StereoMatchMode (0..3)", m));
+    if (m < STEREO_COUPLED || m > STEREO_FIXED_INTERVAL)
+        CV_Error_(Error::StsBadArg, ("StereoEventMatcher: mode %d; use a StereoMatchMode (0..2; frames + StereoSGBM "
+                                     "are FrameStereoMatcher's)", m));
     mode = m;
 }
 
@@ -163,11 +164,6 @@ void StereoMatcherParams::setFixedInterval(double us)
     fixedInterval = duration(us, "fixed interval");
 }
 
-void StereoMatcherParams::setFrameWindow(double us)
-{
-    frameWindow = duration(us, "frame window");
-}
-
 void StereoMatcherParams::setMaxLifetime(double us)
 {
     maxLifetime = duration(us, "max lifetime");
@@ -203,7 +199,7 @@ void StereoMatcherParams::write(FileStorage& fs) const
        << "lifetimeCopyConfidence" << lifetimeCopyConfidence << "maxLifetimeCopies" << maxLifetimeCopies
        << "priorTolerance" << priorTolerance << "recencyWeight" << recencyWeight << "recencyTime" << (double)recencyTime
        << "averagingRadius" << averagingRadius << "lookAhead" << (double)lookAhead << "fixedInterval" << (double)fixedInterval
-       << "frameWindow" << (double)frameWindow << "maxLifetime" << (double)maxLifetime << "activeDistance"
+       << "maxLifetime" << (double)maxLifetime << "activeDistance"
        << activeDistance << "noiseActiveTime" << (double)noiseActiveTime;
 }
 
@@ -214,7 +210,9 @@ void StereoMatcherParams::read(const FileNode& fn)
     {
         const int m = findStereoMode((String)fn["mode"]);
         if (m < 0)
-            CV_Error_(Error::StsParseError, ("StereoEventMatcher: unknown mode '%s'", ((String)fn["mode"]).c_str()));
+            CV_Error_(Error::StsParseError, ("StereoEventMatcher: unknown mode '%s' (coupled, decoupled or fixed; "
+                                             "frames + StereoSGBM are FrameStereoMatcher's)",
+                                             ((String)fn["mode"]).c_str()));
         setMode(m);
     }
     setSensorSize(Size((int)num("sensorWidth", sensorSize.width), (int)num("sensorHeight", sensorSize.height)));
@@ -235,7 +233,6 @@ void StereoMatcherParams::read(const FileNode& fn)
     setAveragingRadius((int)num("averagingRadius", averagingRadius));
     setLookAhead(num("lookAhead", (double)lookAhead));
     setFixedInterval(num("fixedInterval", (double)fixedInterval));
-    setFrameWindow(num("frameWindow", (double)frameWindow));
     setMaxLifetime(num("maxLifetime", (double)maxLifetime));
     setActiveDistance(num("activeDistance", activeDistance));
     setNoiseActiveTime(num("noiseActiveTime", (double)noiseActiveTime));

@@ -27,8 +27,7 @@ struct StereoMatcherParams
     int recencyWeight = 15;   // %
     int averagingRadius = 4;
     // Times in microseconds.
-    int64 recencyTime = 10000, lookAhead = 10000, fixedInterval = 10000, frameWindow = 33000, maxLifetime = 100000,
-          noiseActiveTime = 25000;
+    int64 recencyTime = 10000, lookAhead = 10000, fixedInterval = 10000, maxLifetime = 100000, noiseActiveTime = 25000;
     double activeDistance = 2.5;
     int numThreads = 1;  // not stored: a property of the machine, not of the method
 
@@ -56,7 +55,6 @@ struct StereoMatcherParams
     void setAveragingRadius(int px);
     void setLookAhead(double us);
     void setFixedInterval(double us);
-    void setFrameWindow(double us);
     void setMaxLifetime(double us);
     void setNoiseActiveTime(double us);
     void setActiveDistance(double px);

@@ -19,8 +19,7 @@ enum StereoMatchMode
 {
     STEREO_COUPLED = 0,         //!< the paper's method: a matched event takes its lifetime from the other sensor
     STEREO_DECOUPLED = 1,       //!< plane-fit lifetime for every event of each sensor, then matching
-    STEREO_FIXED_INTERVAL = 2,  //!< no lifetimes: every event stays active for a fixed interval (10 ms)
-    STEREO_FRAME_SGBM = 3       //!< what users do today: edge frames per time window + cv::StereoSGBM
+    STEREO_FIXED_INTERVAL = 2   //!< no lifetimes: every event stays active for a fixed interval (10 ms)
 };
 
 /** @brief Bits of the per-event flags StereoEventMatcher outputs. */
@@ -50,7 +49,7 @@ struct CV_EXPORTS StereoEventEstimate
     /** How clearly the best candidate won, 0..1: 1 - its cost / the cost of the best alternative (a candidate
     more than 1 px away, or no counterpart at all); 0 without candidates or when the left-right check
     contradicts it. Set also when the estimate is rejected (confidence below StereoEventMatcher::getMinConfidence()),
-    so that a caller can rank all events. FRAME_SGBM: 1 where SGBM gave a disparity, else 0. */
+    so that a caller can rank all events. */
     float confidence = 0.f;
     int flags = 0;           //!< StereoEventFlags
     Point rectified = Point(-1, -1);  //!< the event's rectified pixel; (-1, -1) when outside
@@ -142,11 +141,9 @@ neighbours in turn, so that an object's disparity reaches the image's edge from 
   noise).
 - DECOUPLED: the LifetimeEstimator runs for every event, then the event is matched.
 - FIXED_INTERVAL: every event is active for getFixedInterval() microseconds; no lifetimes.
-- FRAME_SGBM: per time window (getFrameWindow(), aligned to multiples of it), each sensor's events are
-  accumulated into an edge frame and cv::StereoSGBM (dv-processing's settings) computes a disparity map;
-  each event takes its pixel's disparity. It works on packets: process() with whole windows (e.g. from
-  EventCapture with EVENT_CAP_PROP_WINDOW_US = the frame window) gives exactly that; a window split over
-  several calls is computed from the events seen so far. processEvent() is not available in this mode.
+
+What users do today, edge frames per time window and cv::StereoSGBM, is FrameStereoMatcher, with the same
+input and outputs.
 
 **Activity** (COUPLED, DECOUPLED): an event with a lifetime stays active for getActiveDistance() lifetimes
 (2.5 by default; the paper has 1), so each edge leaves a trail of 2.5 px in the descriptors: more of each
@@ -192,8 +189,7 @@ public:
                                  OutputArray flags = noArray(), OutputArray depth = noArray(),
                                  OutputArray flow = noArray(), OutputArray confidence = noArray()) = 0;
 
-    /** @brief The same for one event, decided at once (all modes but FRAME_SGBM; identical results to
-    process() with getLookAhead() = 0). */
+    /** @brief The same for one event, decided at once (identical results to process() with getLookAhead() = 0). */
     virtual void processEvent(const Event& event, StereoEventEstimate& estimate) = 0;
 
     /** @brief Colour-coded disparity of the events of @p camera active at time @p t [us] (the paper's
@@ -320,9 +316,6 @@ public:
     modes, the lifetime an event without one is taken to have for its activity during the cold start. */
     CV_WRAP virtual double getFixedInterval() const = 0;
     CV_WRAP virtual void setFixedInterval(double us) = 0;
-    /** @brief FRAME_SGBM: accumulation window [us] (default 33000). */
-    CV_WRAP virtual double getFrameWindow() const = 0;
-    CV_WRAP virtual void setFrameWindow(double us) = 0;
     /** @brief Longest time an event with a lifetime stays active [us] (default 100000, the plane fit's dt),
     whatever its lifetime and getActiveDistance(): bounds how long a slow or wrong estimate pollutes the
     descriptors. */
@@ -365,7 +358,7 @@ public:
     CV_WRAP virtual double getLifetimeSeconds() const = 0;
 };
 
-/** @brief "coupled", "decoupled", "fixed" or "sgbm" for a StereoMatchMode. */
+/** @brief "coupled", "decoupled" or "fixed" for a StereoMatchMode. */
 CV_EXPORTS_W String getStereoModeName(int mode);
 /** @brief The StereoMatchMode named (as getStereoModeName writes it, case-insensitive); -1 when unknown. */
 CV_EXPORTS_W int findStereoMode(const String& name);
