@@ -12,6 +12,8 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <memory>
 #include <string>
 #include <utility>
@@ -167,6 +169,44 @@ inline void spreadOverWindow(const MethodOutput& kept, const std::vector<uchar>&
 
 // What event_evaluate sums over the windows of a run: the disparities scored against the ground truth, the
 // lifetimes' errors, the noise classification, what a filter kept, and the last window's maps for the pictures.
+// The median of non-negative values without keeping them, so that memory does not grow with the recording:
+// a count per value of the top 20 bits of their float representation (the exponent and 11 bits of mantissa,
+// bins 0.05 % of the value wide); the median is the middle of the bin that holds it.
+class StreamingMedian
+{
+public:
+    void add(double value)
+    {
+        const float v = (float)value;
+        uint32_t bits;
+        std::memcpy(&bits, &v, sizeof bits);
+        counts_[bits >> SHIFT]++;
+        total_++;
+    }
+    bool empty() const { return total_ == 0; }
+    // The value at rank total / 2 in sorted order (within its bin).
+    double median() const
+    {
+        int64 seen = 0;
+        for (size_t b = 0; b < counts_.size(); b++)
+            if ((seen += (int64)counts_[b]) > total_ / 2)
+                return 0.5 * (binStart((uint32_t)b) + binStart((uint32_t)b + 1));
+        return 0;
+    }
+
+private:
+    enum { SHIFT = 12 };
+    static double binStart(uint32_t bin)
+    {
+        const uint32_t bits = bin << SHIFT;
+        float v;
+        std::memcpy(&v, &bits, sizeof v);
+        return v;
+    }
+    std::vector<uint32_t> counts_ = std::vector<uint32_t>((size_t)1 << (32 - SHIFT), 0);
+    int64 total_ = 0;
+};
+
 struct EvaluationTotals
 {
     int64 events = 0, signal = 0, withLifetime = 0;
@@ -180,7 +220,9 @@ struct EvaluationTotals
     int64 withLifetimeCamera[2] = { 0, 0 };
     int64 noiseTrue = 0, noiseFlagged = 0, noiseCorrect = 0;
     std::vector<int> errorHistogram = std::vector<int>(41, 0);  // |error| in 0.25 px bins up to 10 px
-    std::vector<double> lifetimeRelErrors;
+    // |lifetime - truth| / truth of the signal events with both: median, and 2.5 % bins up to 100 %.
+    StreamingMedian lifetimeError;
+    std::vector<int> lifetimeErrorHistogram = std::vector<int>(41, 0);
     // Signal events a flickering plane caused (GT_FLAG_FLICKER); signal - flicker are the motion's.
     int64 flicker = 0;
     // --filter: what it kept of the motion's events, of the noise and of the flicker, and its own time.
@@ -217,7 +259,11 @@ struct EvaluationTotals
                     withLifetime++;
                     withLifetimeCamera[window[i].camera]++;
                     if (g[GT_LIFETIME] > 0)
-                        lifetimeRelErrors.push_back(std::abs(estimate.lifetime[i] - g[GT_LIFETIME]) / g[GT_LIFETIME]);
+                    {
+                        const double r = std::abs(estimate.lifetime[i] - g[GT_LIFETIME]) / g[GT_LIFETIME];
+                        lifetimeError.add(r);
+                        lifetimeErrorHistogram[std::min<size_t>(lifetimeErrorHistogram.size() - 1, (size_t)(r / 0.025))]++;
+                    }
                 }
             }
             if (isNoise)

@@ -23,7 +23,7 @@ struct EvaluationReport
 
 /** Writes the report of @p acc; @p filterPicture: the last window before and
 after the filter, or empty. */
-inline void writeEvaluationReport(const EvaluationReport& r, EvaluationTotals& acc, const Mat& filterPicture)
+inline void writeEvaluationReport(const EvaluationReport& r, const EvaluationTotals& acc, const Mat& filterPicture)
 {
     // Report.
     auto share = [](int64 a, int64 b) { return b > 0 ? 100.0 * (double)a / (double)b : 0.0; };
@@ -38,12 +38,8 @@ inline void writeEvaluationReport(const EvaluationReport& r, EvaluationTotals& a
     std::string lifetimeError = "n/a", precision = "n/a", recall = "n/a";
     if (r.lifetimes)
     {
-        if (!acc.lifetimeRelErrors.empty())
-        {
-            std::vector<double>& r = acc.lifetimeRelErrors;
-            std::nth_element(r.begin(), r.begin() + r.size() / 2, r.end());
-            lifetimeError = std::to_string(100.0 * r[r.size() / 2]);
-        }
+        if (!acc.lifetimeError.empty())
+            lifetimeError = std::to_string(100.0 * acc.lifetimeError.median());
         precision = acc.noiseFlagged ? std::to_string(share(acc.noiseCorrect, acc.noiseFlagged)) : "n/a";
         recall = acc.noiseTrue ? std::to_string(share(acc.noiseCorrect, acc.noiseTrue)) : "n/a (no noise)";
     }
@@ -140,7 +136,7 @@ inline void writeEvaluationReport(const EvaluationReport& r, EvaluationTotals& a
            << "| mean absolute disparity error | " << mae << " px |\n"
            << "| mean relative depth error | " << relDepth << " % |\n";
     if (lifetimes)
-        md << "| lifetime median relative error | " << lifetimeError << (acc.lifetimeRelErrors.empty() ? "" : " %") << " |\n"
+        md << "| lifetime median relative error | " << lifetimeError << (acc.lifetimeError.empty() ? "" : " %") << " |\n"
            << "| noise precision / recall | " << noiseText << " |\n"
            << "| events with a lifetime (left / right) | " << acc.withLifetime << " (" << acc.withLifetimeCamera[0]
            << " / " << acc.withLifetimeCamera[1] << ") |\n";
@@ -168,10 +164,7 @@ inline void writeEvaluationReport(const EvaluationReport& r, EvaluationTotals& a
     }
     if (lifetimes)
     {
-        std::vector<int> h(41, 0);  // relative lifetime error in 2.5 % bins up to 100 %
-        for (double r : acc.lifetimeRelErrors)
-            h[std::min<size_t>(h.size() - 1, (size_t)(r / 0.025))]++;
-        drawHistogram(h, r.output + "/lifetime_error_histogram.png",
+        drawHistogram(acc.lifetimeErrorHistogram, r.output + "/lifetime_error_histogram.png",
                       "|lifetime error| / true lifetime, 2.5 % bins, last bin >= 100 % (" + r.method + ")", "100 %");
         md << "\n![lifetime error histogram](lifetime_error_histogram.png)\n";
     }
@@ -198,7 +191,7 @@ inline void writeEvaluationReport(const EvaluationReport& r, EvaluationTotals& a
         std::cout << "density " << density << " %, within 1 px " << within1 << " %, matching rate " << matchingRate
                   << " %, MAE " << mae << " px, ";
     if (lifetimes)
-        std::cout << "lifetime median relative error " << lifetimeError << (acc.lifetimeRelErrors.empty() ? "" : " %")
+        std::cout << "lifetime median relative error " << lifetimeError << (acc.lifetimeError.empty() ? "" : " %")
                   << ", " << acc.withLifetime << " of " << acc.events << " events with a lifetime, ";
     if (disparities || lifetimes)
         std::cout << usPerEvent << " us/event; ";
