@@ -120,7 +120,8 @@ int main(int argc, char** argv)
     const char* real[] = { "format_samples/aestream_davis346.aedat4", "format_samples/tonic_sample_dvxplorer.aedat4",
                            "format_samples/evt2_sample.raw", "format_samples/evt3_sample.raw",
                            "format_samples/tonic_sample_ncars.dat", "format_samples/ecpy_test_events_1_ros1.bag",
-                           "format_samples/ros2_libcaer_rollover", "stereo_dvs128_tum/Fan_disp8.dat",
+                           "format_samples/ros2_libcaer_rollover", "format_samples/ecpy_test_events_2_mcap",
+                           "stereo_dvs128_tum/Fan_disp8.dat",
                            "stereo_dvs128_tum/pendulum_left_30cm_2.tsv.txt" };
     for (const char* f : real)
     {

@@ -93,3 +93,49 @@ def davis_stream(options, transfer, wait_reset):
 write("davis_decoder", "davis240.bin", davis_stream(0x00, 200, False))
 write("davis_decoder", "davis240_wait_reset.bin", davis_stream(0x80, 7, True))
 write("davis_decoder", "invert_xy.bin", davis_stream(0x40 | 0x02 | 0x10, 100, False))
+
+# ROS 2 bag in MCAP storage: magic, records {u8 opcode, u64 length, content} (strings: u32 length), a schema,
+# a channel and two CDR event_camera_msgs/msg/EventPacket messages in libcaer_cmp (16-bit words, code in the
+# top 4 bits: 0 time high, 1 time low, 2 column, 3 row + polarity), then the data end, the footer, the magic.
+def mcap_record(opcode, content):
+    return struct.pack("<BQ", opcode, len(content)) + content
+
+
+def mcap_str(s):
+    return struct.pack("<I", len(s)) + s
+
+
+def cdr_event_packet(time_base, words):
+    out = bytearray(b"\x00\x01\x00\x00")
+    def align(a):
+        while (len(out) - 4) % a:
+            out.append(0)
+    def put(fmt, v):
+        align(struct.calcsize(fmt))
+        out.extend(struct.pack("<" + fmt, v))
+    def cdr_str(s):
+        put("I", len(s) + 1)
+        out.extend(s + b"\x00")
+    put("i", 1700000000); put("I", 0); cdr_str(b"camera")
+    put("I", 260); put("I", 346); put("Q", 1); put("Q", time_base); cdr_str(b"libcaer_cmp"); put("B", 0)
+    payload = b"".join(struct.pack("<H", w) for w in words)
+    put("I", len(payload))
+    out.extend(payload)
+    return bytes(out)
+
+
+def cmp_words(evs):
+    words = []
+    for t, x, y, p in evs:
+        words += [0x0 << 12 | (t >> 12) & 0xFFF, 0x1 << 12 | t & 0xFFF, 0x2 << 12 | x, 0x3 << 12 | p << 11 | y]
+    return words
+
+
+mcap = b"\x89MCAP0\r\n" + mcap_record(0x01, mcap_str(b"ros2") + mcap_str(b"make_seeds.py"))
+mcap += mcap_record(0x03, struct.pack("<H", 1) + mcap_str(b"event_camera_msgs/msg/EventPacket") + mcap_str(b"ros2msg") + struct.pack("<I", 0))
+mcap += mcap_record(0x04, struct.pack("<HH", 1, 1) + mcap_str(b"/events") + mcap_str(b"cdr") + struct.pack("<I", 0))
+for k in range(2):
+    data = cdr_event_packet(10000000 * (k + 1), cmp_words(sorted(events(8, 346, 260))))  # 10 ms apart
+    mcap += mcap_record(0x05, struct.pack("<HIQQ", 1, k, k, k) + data)
+mcap += mcap_record(0x0F, struct.pack("<I", 0)) + mcap_record(0x02, struct.pack("<QQI", 0, 0, 0)) + b"\x89MCAP0\r\n"
+write("mcap", "two_messages.mcap", mcap)

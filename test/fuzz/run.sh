@@ -3,7 +3,7 @@
 #
 #   test/fuzz/run.sh [--runs N | --seconds S] [target ...]
 #
-# Targets: text dat raw aedat2 aedat3 aedat4 rosbag1 rosbag2 hdf5 davis_decoder (default: all).
+# Targets: text dat raw aedat2 aedat3 aedat4 rosbag1 rosbag2 mcap hdf5 davis_decoder (default: all).
 # Default: 1,000,000 executions each. Seeds: test/fuzz/corpus/<target> (committed, from make_seeds.py),
 # AEDAT 4.0 files the module's writer makes, and the real samples of ../shared/data/format_samples when
 # present. New inputs go to build-fuzz/corpus/<target>, never into the repository. A crash, leak, timeout,
@@ -24,7 +24,7 @@ while [ $# -gt 0 ]; do
     *) targets+=("$1"); shift ;;
   esac
 done
-[ ${#targets[@]} -gt 0 ] || targets=(text dat raw aedat2 aedat3 aedat4 rosbag1 rosbag2 hdf5 davis_decoder)
+[ ${#targets[@]} -gt 0 ] || targets=(text dat raw aedat2 aedat3 aedat4 rosbag1 rosbag2 mcap hdf5 davis_decoder)
 command -v clang++ >/dev/null || { echo "run.sh: needs clang (apt-get install clang)" >&2; exit 1; }
 
 export CCACHE_DIR=${CCACHE_DIR:-$cache/ccache}
@@ -51,6 +51,7 @@ extra_seeds() {  # the real samples of one format, when ../shared/data is there
     dat) ls "$shared"/*.dat ;;
     rosbag1) ls "$shared"/*.bag ;;
     rosbag2) find "$shared" -name '*.db3' ;;
+    mcap) find "$shared" -name '*.mcap' ;;
   esac 2>/dev/null || true
 }
 

@@ -76,9 +76,15 @@ function(opencv_event_configure_library target)
   opencv_event_link_test_codecs(${target})
 endfunction()
 
-# bzip2, sqlite3 and HDF5 are also linked into the tests: they write bz2 ROS bag chunks, ROS2 bag databases
-# and MVSEC fixture files.
+# bzip2, sqlite3, LZ4, ZSTD and HDF5 are also linked into the tests: they write bz2 ROS bag chunks, ROS2 bag
+# databases, compressed MCAP chunks and MVSEC fixture files.
 function(opencv_event_link_test_codecs target)
+  foreach(dep LZ4 ZSTD)
+    if(OPENCV_EVENT_${dep}_FOUND)
+      target_link_libraries(${target} PRIVATE PkgConfig::OPENCV_EVENT_${dep})
+      target_compile_definitions(${target} PRIVATE OPENCV_EVENT_HAVE_${dep}=1)
+    endif()
+  endforeach()
   if(OPENCV_EVENT_SQLITE3_FOUND)
     target_link_libraries(${target} PRIVATE PkgConfig::OPENCV_EVENT_SQLITE3)
     target_compile_definitions(${target} PRIVATE OPENCV_EVENT_HAVE_SQLITE3=1)

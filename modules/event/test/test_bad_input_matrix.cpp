@@ -81,6 +81,7 @@ std::vector<Sample> samples()
         { "dat/cd.dat", EVENT_CAP_PROPHESEE_DAT, ".dat" },
         { "raw/evt2.raw", EVENT_CAP_PROPHESEE_RAW, ".raw" },
         { "raw/evt3.raw", EVENT_CAP_PROPHESEE_RAW, ".raw" },
+        { "mcap/two_messages.mcap", EVENT_CAP_ROSBAG2, ".mcap" },
     };
     std::vector<Sample> out;
     for (const auto& s : seeds)
@@ -192,6 +193,28 @@ Layout layoutOf(const Sample& s)
         {
             pos += 8 + (size_t)int32At(b, pos + 4);
             l.wholeRecords.insert(pos);
+        }
+    }
+    else if (s.api == EVENT_CAP_ROSBAG2)
+    {
+        // MCAP: the magic, then records of {u8 opcode, u64 length, content}; the events start with the first
+        // message record (opcode 5), and past the data-end record (opcode 15) every event's record is whole.
+        size_t pos = 8;
+        while (pos + 9 <= b.size())
+        {
+            const uint8_t opcode = (uint8_t)b[pos];
+            uint64_t length = 0;
+            std::memcpy(&length, b.data() + pos + 1, 8);
+            if (opcode == 5 && l.dataStart == 0)
+                l.dataStart = pos;
+            l.wholeRecords.insert(pos);
+            pos += 9 + (size_t)length;
+            if (opcode == 15)
+            {
+                for (size_t end = pos; end <= b.size(); end++)
+                    l.wholeRecords.insert(end);
+                break;
+            }
         }
     }
     else

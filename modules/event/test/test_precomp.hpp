@@ -11,6 +11,7 @@
 #include "test_event_helpers.hpp"
 #include "test_simulator_helpers.hpp"
 #include "test_stereo_methods.hpp"
+#include "test_ros_messages.hpp"
 
 #include <cstdio>
 #include <map>

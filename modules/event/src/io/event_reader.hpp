@@ -82,8 +82,12 @@ inline double progressThroughChunk(double atStart, double atEnd, size_t taken, s
     return atStart + (atEnd - atStart) * (double)taken / (double)size;
 }
 
-/** A ROS2 bag: a folder with metadata.yaml, or an sqlite3 database file. */
+/** A ROS2 bag: a folder with metadata.yaml, an sqlite3 database file or an MCAP file. */
 bool isRosBag2(const String& path);
+/** A file that starts with MCAP's magic. */
+bool isMcapFile(const String& path);
+/** A ROS2 bag in MCAP storage: @p files, in order (one bag, @p bag names it in messages). */
+Ptr<EventReader> openMcapReader(const String& bag, const std::vector<std::string>& files, const ReaderOptions& options);
 /** Merges a left and a right stream in time order (left first on ties), setting Event::camera and adding
 @p rightTimeOffset to the right stream's timestamps. Each side is read in chunks: memory stays bounded.
 @p oneFile: both read the same file, one camera each (their progress adds up, see ownShare()). */

@@ -2,7 +2,8 @@
 // It is subject to the license terms in the LICENSE file found in the top-level directory
 // of this distribution and at http://opencv.org/license.html.
 
-// ROS2 bags in the sqlite3 storage (a folder with metadata.yaml and *.db3 files, or one .db3 file):
+// ROS2 bags: a folder with metadata.yaml and its storage files, or one storage file. MCAP storage is
+// reader_mcap.cpp's; here the sqlite3 storage (*.db3):
 // table topics(id, name, type, ...) and messages(topic_id, timestamp, data), data = CDR-serialised
 // event_camera_msgs/msg/EventPacket or its former name event_array_msgs/msg/EventArray (encodings evt3,
 // libcaer). Messages are stepped through one at a time
@@ -34,17 +35,13 @@ bool isRosBag2(const String& path)
     std::ifstream f(path.c_str(), std::ios::binary);
     char head[16] = { 0 };
     f.read(head, 16);
-    return std::memcmp(head, "SQLite format 3", 16) == 0;
+    return std::memcmp(head, "SQLite format 3", 16) == 0 || isMcapFile(path);
 }
-
-#ifdef OPENCV_EVENT_HAVE_SQLITE3
 
 namespace {
 
-const char* kEventPacket2 = "event_camera_msgs/msg/EventPacket";
-const char* kLegacyEventArray2 = "event_array_msgs/msg/EventArray";  // EventPacket before its 2023 rename: same layout
-
-// The .db3 files of a bag: those metadata.yaml lists under relative_file_paths, in order.
+// The storage files of a bag (.db3 or .mcap): those metadata.yaml lists under relative_file_paths, in order;
+// the file itself when the path is one.
 std::vector<std::string> bagFiles(const String& path)
 {
     struct stat st;
@@ -79,10 +76,20 @@ std::vector<std::string> bagFiles(const String& path)
     return files;
 }
 
+}  // namespace
+
+#ifdef OPENCV_EVENT_HAVE_SQLITE3
+
+namespace {
+
+const char* kEventPacket2 = "event_camera_msgs/msg/EventPacket";
+const char* kLegacyEventArray2 = "event_array_msgs/msg/EventArray";  // EventPacket before its 2023 rename: same layout
+
 class RosBag2Reader CV_FINAL : public EventReader
 {
 public:
-    RosBag2Reader(const String& path, const ReaderOptions& options) : path_(path), files_(bagFiles(path))
+    RosBag2Reader(const String& path, const std::vector<std::string>& files, const ReaderOptions& options)
+        : path_(path), files_(files)
     {
         // The destructor does not run when a constructor throws: close the database on the way out.
         try
@@ -207,29 +214,10 @@ private:
         db_ = nullptr;
     }
 
-    // CDR: 4-byte encapsulation header, then the fields aligned to their size (relative to byte 4).
     void decodeMessage(const uchar* data, size_t n, int64 messageId, std::vector<Event>& out)
     {
-        const String where = files_[fileIndex_] + " (message id " + std::to_string(messageId) + ")";
-        if (n < 4 || data[0] != 0 || data[1] != 1)
-            formatError(where, 0, "message is not little-endian CDR");
-        MessageCursor m(data, n, where, 0, 4);
-        m.bytes(4, "encapsulation");
-        m.read<int32_t>("stamp sec");
-        m.read<uint32_t>("stamp nanosec");
-        m.string("frame_id", true);
-        m.align(4);
-        const uint32_t height = m.read<uint32_t>("height"), width = m.read<uint32_t>("width");
-        if (size_.empty() && width > 0 && height > 0 && width <= 32768 && height <= 32768)
-            size_ = Size((int)width, (int)height);
-        m.align(8);
-        m.read<uint64_t>("seq");
-        const uint64_t timeBase = m.read<uint64_t>("time_base");
-        const std::string encoding = m.string("encoding", true);
-        m.read<uint8_t>("is_bigendian");
-        m.align(4);
-        const uint32_t len = m.read<uint32_t>("events length");
-        decoder_.decodePacket(encoding, m.bytes(len, "events"), len, timeBase, out, where, 0);
+        decoder_.decodeCdrPacket(data, n, files_[fileIndex_] + " (message id " + std::to_string(messageId) + ")",
+                                 size_, out);
     }
 
     String path_;
@@ -246,20 +234,20 @@ private:
 
 }  // namespace
 
+#endif
+
 Ptr<EventReader> openRosBag2Reader(const String& path, const ReaderOptions& options)
 {
-    return makePtr<RosBag2Reader>(path, options);
-}
-
+    const std::vector<std::string> files = bagFiles(path);
+    if (isMcapFile(files[0]) || fileExtension(files[0]) == "mcap")
+        return openMcapReader(path, files, options);
+#ifdef OPENCV_EVENT_HAVE_SQLITE3
+    return makePtr<RosBag2Reader>(path, files, options);
 #else
-
-Ptr<EventReader> openRosBag2Reader(const String& path, const ReaderOptions&)
-{
-    CV_Error_(Error::StsNotImplemented, ("%s: ROS2 bags need sqlite3, which this build was configured without "
-                                         "(install libsqlite3-dev and rebuild)", path.c_str()));
-}
-
+    CV_Error_(Error::StsNotImplemented, ("%s: ROS2 bags in sqlite3 storage need sqlite3, which this build was "
+                                         "configured without (install libsqlite3-dev and rebuild)", path.c_str()));
 #endif
+}
 
 }  // namespace detail
 }  // namespace event

@@ -10,8 +10,9 @@
 // fields and hands the payload here).
 //  - event_camera_msgs/EventPacket, encoding "evt3": Prophesee EVT 3.0 words; the sensor time (us) is
 //    delivered (the decoder state runs across packets, as the words form one stream);
-//  - encoding "libcaer" / "libcaer_cmp"-less plain libcaer: 8-byte libcaer polarity events {u32 data, int32
-//    t_us}; time = time_base (ns) / 1000 + t, + 2^31 us when t rolls over inside the packet;
+//  - encoding "libcaer": 8-byte libcaer polarity events {u32 data, int32 t_us}; time = time_base (ns) / 1000
+//    + t, + 2^31 us when t rolls over inside the packet;
+//  - encoding "libcaer_cmp": event_camera_codecs' compact form of it (decodeLibcaerCompressed);
 //  - dvs_msgs/EventArray events: 13-byte records {u16 x, u16 y, u32 sec, u32 nsec, u8 polarity}.
 
 #include "io/evt3_decoder.hpp"
@@ -54,8 +55,14 @@ public:
                 out.push_back(Event(high + t, (int)((d >> 17) & 0x7FFF), (int)((d >> 2) & 0x7FFF), (d >> 1) & 1u));
             }
         }
+        else if (encoding == "libcaer_cmp")
+        {
+            if (n % 2 != 0)
+                formatError(path, offset, format("libcaer_cmp packet of %zu bytes is not a whole number of 16-bit words", n));
+            decodeLibcaerCompressed(data, n / 2, timeBase, out);
+        }
         else
-            formatError(path, offset, "EventPacket encoding \"" + encoding + "\" is not supported (evt3, libcaer)");
+            formatError(path, offset, "EventPacket encoding \"" + encoding + "\" is not supported (evt3, libcaer, libcaer_cmp)");
     }
 
     /** Decodes @p count dvs_msgs/Event records (13 bytes each). */
@@ -73,9 +80,53 @@ public:
         }
     }
 
+    /** Decodes one CDR-serialised event_camera_msgs/msg/EventPacket (ROS2: a 4-byte encapsulation header, then
+    the fields aligned to their size relative to byte 4). The sensor size is taken into @p sensorSize when that
+    is still empty. Errors name @p where. */
+    void decodeCdrPacket(const uchar* data, size_t n, const String& where, Size& sensorSize, std::vector<Event>& out);
+
     int64 skipped() const { return evt3_.skipped(); }
 
 private:
+    // libcaer_cmp (event_camera_codecs' compact libcaer): 16-bit words, the code in the top 4 bits. Time is
+    // [us] after the packet's time base (ns): a high word sets bits 12-23, a low word bits 0-11, both 0 at the
+    // start of each packet. An x word sets the column; a y word gives one event there (bit 11: polarity); a
+    // vector base sets a row and a polarity, and each vector word then gives an event at each set bit i of its
+    // low 8 bits, row base + i, and moves the base 8 rows on. Column, base and polarity carry over packets.
+    void decodeLibcaerCompressed(const uchar* data, size_t words, uint64_t timeBase, std::vector<Event>& out)
+    {
+        enum { TIME_HIGH = 0, TIME_LOW = 1, ADDR_X = 2, ADDR_Y = 3, VECT_BASE_Y = 4, VECT_8 = 5 };
+        const int64 base = (int64)(timeBase / 1000);
+        int64 high = 0, low = 0;
+        for (size_t i = 0; i < words; i++)
+        {
+            uint16_t w;
+            std::memcpy(&w, data + 2 * i, 2);
+            const int code = w >> 12;
+            if (code == TIME_HIGH)
+                high = (int64)(w & 0xFFF) << 12;
+            else if (code == TIME_LOW)
+                low = w & 0xFFF;
+            else if (code == ADDR_X)
+                cmpX_ = w & 0x7FF;
+            else if (code == ADDR_Y)
+                out.push_back(Event(base + (high | low), cmpX_, w & 0x7FF, (w >> 11) & 1));
+            else if (code == VECT_BASE_Y)
+            {
+                cmpBaseY_ = w & 0x7FF;
+                cmpPolarity_ = (w >> 11) & 1;
+            }
+            else if (code == VECT_8)
+            {
+                for (int b = 0; b < 8; b++)
+                    if (w & (1 << b))
+                        out.push_back(Event(base + (high | low), cmpX_, cmpBaseY_ + b, cmpPolarity_));
+                cmpBaseY_ += 8;
+            }
+        }
+    }
+
+    int cmpX_ = 0, cmpBaseY_ = 0, cmpPolarity_ = 0;
     Evt3Decoder evt3_;
     std::vector<uint16_t> words_;
 };
@@ -138,6 +189,30 @@ private:
     int64 offset_;
     size_t origin_;
 };
+
+inline void RosEventDecoder::decodeCdrPacket(const uchar* data, size_t n, const String& where, Size& sensorSize,
+                                             std::vector<Event>& out)
+{
+    if (n < 4 || data[0] != 0 || data[1] != 1)
+        formatError(where, 0, "message is not little-endian CDR");
+    MessageCursor m(data, n, where, 0, 4);
+    m.bytes(4, "encapsulation");
+    m.read<int32_t>("stamp sec");
+    m.read<uint32_t>("stamp nanosec");
+    m.string("frame_id", true);
+    m.align(4);
+    const uint32_t height = m.read<uint32_t>("height"), width = m.read<uint32_t>("width");
+    if (sensorSize.empty() && width > 0 && height > 0 && width <= 32768 && height <= 32768)
+        sensorSize = Size((int)width, (int)height);
+    m.align(8);
+    m.read<uint64_t>("seq");
+    const uint64_t timeBase = m.read<uint64_t>("time_base");
+    const std::string encoding = m.string("encoding", true);
+    m.read<uint8_t>("is_bigendian");
+    m.align(4);
+    const uint32_t len = m.read<uint32_t>("events length");
+    decodePacket(encoding, m.bytes(len, "events"), len, timeBase, out, where, 0);
+}
 
 }  // namespace detail
 }  // namespace event

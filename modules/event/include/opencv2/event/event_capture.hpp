@@ -24,7 +24,7 @@ enum EventCaptureAPIs
     EVENT_CAP_AEDAT3 = 5,        //!< cAER / libcaer AEDAT 3.1 (polarity packets)
     EVENT_CAP_AEDAT4 = 6,        //!< DV AEDAT 4.0 (LZ4 / ZSTD packets; two event streams = stereo)
     EVENT_CAP_ROSBAG1 = 7,       //!< ROS1 bag v2.0, dvs_msgs/EventArray or event_camera_msgs/EventPacket (evt3, libcaer); two event topics = stereo
-    EVENT_CAP_ROSBAG2 = 8,       //!< ROS2 bag (sqlite3 storage; folder or .db3), event_camera_msgs/msg/EventPacket (evt3, libcaer)
+    EVENT_CAP_ROSBAG2 = 8,       //!< ROS2 bag (MCAP or sqlite3 storage; folder, .mcap or .db3), event_camera_msgs/msg/EventPacket (evt3, libcaer, libcaer_cmp)
     EVENT_CAP_HDF5 = 9,          //!< MVSEC-style HDF5 (/davis/left|right/events), when built with libhdf5
     EVENT_CAP_DAVIS = 10         //!< live iniVation DAVIS240 / DAVIS346 over libusb-1.0: source "davis:0" (index), "davis:<serial>", or "0" / "<serial>" with this apiPreference
 };
