@@ -108,7 +108,8 @@ std::vector<Event> sortedByTime(std::vector<Event> ev)
 }
 
 // The same messages unchunked, in one chunk (stored, LZ4, ZSTD), split over two chunks, with and without a
-// summary section: the same events, as a stereo pair of the topics sorted by name.
+// summary section (or one that lacks the channels): the same events, as a stereo pair of the topics sorted by
+// name.
 TEST(Event_Capture_Mcap, every_storage_layout_gives_the_same_events)
 {
     struct Layout { const char* name; std::string data; std::string summary; };
@@ -116,6 +117,8 @@ TEST(Event_Capture_Mcap, every_storage_layout_gives_the_same_events)
         { "unchunked", definitions() + messages(), "" },
         { "one chunk", McapFile::chunk(definitions() + messages(), ""), definitions() },
         { "one chunk, no summary", McapFile::chunk(definitions() + messages(), ""), "" },
+        { "a summary without the channels", McapFile::chunk(definitions() + messages(), ""),
+          McapFile::record(0x0B, std::string(46, '\0')) },
         { "two chunks", McapFile::chunk(definitions() + McapFile::message(3, 0, eventPacket(346, 260, "libcaer_cmp", 5000000, kLeftWords)), "") +
                         McapFile::chunk(McapFile::message(4, 1, eventPacket(346, 260, "libcaer_cmp", 5000000, kRightWords)) +
                                         McapFile::message(3, 2, eventPacket(346, 260, "libcaer_cmp", 10000000, kLeftWords2)), ""), "" },

@@ -262,7 +262,6 @@ private:
         input_.reset(new FileInput(files_[0]));
         FileInput& in = *input_;
         expectMagic(in);
-        std::set<std::string> topics;
         uint64_t summaryStart = 0;
         if (in.size() >= 8 + 9 + 20 + 8)
         {
@@ -278,7 +277,22 @@ private:
             if (summaryStart >= (uint64_t)in.size())
                 summaryStart = 0;
         }
-        in.seek(summaryStart > 0 ? (int64)summaryStart : 8);
+        scanDefinitions(in, summaryStart > 0 ? (int64)summaryStart : 8, summaryStart > 0);
+        std::set<std::string> topics = channelTopics();
+        if (topics.empty() && summaryStart > 0)
+        {
+            // A summary without the channels: they are in the data section.
+            scanDefinitions(in, 8, false);
+            topics = channelTopics();
+        }
+        return std::vector<std::string>(topics.begin(), topics.end());
+    }
+
+    // Reads the schema and channel records from @p from to the end of its section; in the data section also
+    // those inside chunks (@p summary: the summary section, which holds them outside chunks).
+    void scanDefinitions(FileInput& in, int64 from, bool summary)
+    {
+        in.seek(from);
         uchar opcode;
         uint64_t length;
         int64 at;
@@ -296,15 +310,20 @@ private:
                 readContent(in, length, at, record_);
                 handle(opcode, record_.data(), record_.size(), at, nullptr);
             }
-            else if (opcode == MCAP_CHUNK && summaryStart == 0)
+            else if (opcode == MCAP_CHUNK && !summary)
                 loadChunk(in, length, at);
             else
                 in.seek(at + 9 + (int64)length);
         }
+    }
+
+    std::set<std::string> channelTopics() const
+    {
+        std::set<std::string> topics;
         for (const auto& c : channels_)
             if (!c.second.empty())
                 topics.insert(c.second);
-        return std::vector<std::string>(topics.begin(), topics.end());
+        return topics;
     }
 
     String bag_;
