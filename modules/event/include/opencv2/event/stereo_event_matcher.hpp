@@ -35,7 +35,7 @@ enum StereoEventFlags
     STEREO_OUTSIDE = 128,           //!< the rectified position lies outside the image: not processed
     /** the estimates around the event put its counterpart past the other sensor's border, where the other
     camera does not see it (e.g. a near object in the left image's first columns): the disparity is their
-    median, not a match (see the class description, Past the other camera's view) */
+    median, not a match (doc/stereo.md, "The method") */
     STEREO_BEYOND_VIEW = 256
 };
 
@@ -59,114 +59,27 @@ struct CV_EXPORTS StereoEventEstimate
 @cite Hadviger2019), with the descriptor of Zou et al. @cite Zou2017.
 
 Events of both sensors come in one time-ordered stream (Event::camera tells them apart, see
-mergeStereoEvents / EventCapture::openStereo); each is rectified through a per-pixel lookup table built from
-the calibration (none: the input is taken as rectified) and matched against what the other sensor shows
-getLookAhead() later (10 ms by default; see there), so either sensor's events may come first.
+mergeStereoEvents / EventCapture::openStereo). Each is rectified through a per-pixel table built from the
+calibration (none: the input is taken as rectified) and matched along its row against what the other sensor
+shows getLookAhead() later, so either sensor's events may come first. Per pixel and polarity each sensor keeps
+the vector to the nearest *active* event; a pixel's descriptor is the histogram of those vectors over its
+N x N window in 12 orientation bins per polarity; a candidate disparity costs the SAD of the descriptors over a
+W x W window, grown ring by ring up to A x A until the cheapest candidate beats every other one and "no
+counterpart yet" by the uniqueness ratio. Every event keeps its best estimate with a confidence
+(StereoEventEstimate::confidence) that ranks the estimates; getMinConfidence() rejects the less confident ones.
 
-**Descriptor.** Each sensor keeps, per pixel and polarity, the vector to the nearest *active* event (an
-event is active from its arrival until it is decided, then, with a lifetime, until timestamp + a few lifetimes;
-see Activity).
-Vectors longer than the maximum vector length are dropped: far vectors would otherwise fill the histograms
-with scene layout instead of local structure. The descriptor of a pixel is the histogram of the vectors of
-the N x N window around it over 12 orientation bins of 30 degrees per polarity (24 values; a pixel that is
-itself active votes into all 12 bins of its polarity). These maps are maintained incrementally as events
-activate and expire.
+The modes (StereoMatchMode) differ in where lifetimes come from, and so in how long events stay active: in
+COUPLED, the paper's method, a confidently matched event takes the median lifetime of the other sensor's active
+events around its counterpart instead of fitting its own plane. What this implementation adds to the method as
+published (the recency cost, the temporal prior, the averaging, the estimates past the other camera's view, the
+look-ahead, the cold start, events the plane fit calls noise kept active, a lifetime copied once) is described
+in the manual (doc/stereo.md, "The method"), with the parameter that turns each off. The frame baseline, edge
+frames and cv::StereoSGBM, is FrameStereoMatcher.
 
-**Cost and decision.** For each disparity d in [min, max] whose candidate pixel has active structure of the
-event's polarity, the cost is the sum over a W x W window of the SADs between the event's descriptors and
-the candidate's; near the border the window is clipped to the event's own image (past it both sensors are
-empty, which would favour candidates that also run past the other border). Where the window of a candidate
-reaches past the other image's border, the other sensor cannot see those columns: the candidate's cost is
-taken over the columns it sees, scaled to the whole window, and so is the cost of "no counterpart yet", so
-that what one camera alone sees counts neither for nor against a candidate.
-
-**Recency.** The events of one edge fire in both sensors at about the same time, while a descriptor window
-also holds the trails that other edges left while their events stay active: where a fast edge passes in
-front of a slower one (a leg before the torso, a box before a pole), the slower edge's trail can match the
-window's layout as well as the event's own edge does, at the slower edge's disparity. Each candidate
-therefore also pays a recency cost: getRecencyWeight() % of the window's descriptor mass, times the time
-between the event and the other sensor's active event nearest to it in time within a pixel of the candidate,
-over getRecencyTime() (at most 1; 1 when no event is active within a pixel). It ranks the candidates:
-against "no counterpart yet" (below) the winner's recency cost is added to the cost of nothing as well, as a
-counterpart that fires a little apart in time is still a counterpart.
-
-**Decision.** The alternatives to the cheapest candidate (the winner) are every candidate further than one
-pixel from it and "no counterpart yet", whose cost is that of matching against nothing (the window's
-descriptor mass, on either sensor). Aggregation is iterative: while the winner does not beat every alternative
-by the uniqueness ratio (its cost below (100 - ratio) % of theirs), the window grows by a ring of one pixel,
-up to A x A. The winner (refined to sub-pixel by two lines of opposite slope through its cost and its
-neighbours') gets a **confidence**, 1 - its cost / the best alternative's cost, set to 0 when the other
-sensor's own estimates around the counterpart disagree by more than a pixel (left-right check). By default
-every event keeps its best estimate with its confidence, which ranks the estimates: keeping only the most
-confident trades density for precision (event_evaluate draws that curve). With setMinConfidence(t), t > 0, the
-estimates whose confidence is below t are rejected: the event is flagged STEREO_AMBIGUOUS and gets no
-disparity rather than a likely wrong one, but its confidence is still output.
-
-**Averaging** (COUPLED, DECOUPLED, FIXED_INTERVAL). A match picks a whole-pixel candidate and refines it from
-one window's costs, so the events of one surface scatter over a pixel or two around its disparity; their mean
-lies closer to it. The disparity an event outputs is the mean of its own estimate and the still active
-estimates within getAveragingRadius() pixels of it (this sensor's) and of its counterpart (the other
-sensor's, matched the other way) whose disparity is within 1.5 px of its own: another surface, further apart
-in depth, is left out, so depth edges stay sharp. What the neighbours read (the
-temporal prior, the left-right check, the averaging itself, renderDisparity()) is each event's own estimate,
-so the averaging never feeds on its own output.
-
-**Temporal prior.** An edge crosses the sensor a pixel at a time, so what its events were matched to a
-moment ago, nearby, is most often what the next one should be matched to. When the aggregation ends
-without a unique winner (repeated or row-parallel structure), the median disparity of this sensor's still
-active estimates within 5 pixels (at least 3 of them) is the prior: the cheapest candidate within a pixel of
-it wins when its cost is within getPriorTolerance() % of the best's. On a horizontal edge (the active events
-around the event move more vertically than horizontally) the estimates are taken 30 pixels to each side
-along the row, 5 up and down: there only the edge's ends tell the candidates apart, so growing the window
-seldom decides, and the prior is tried as soon as the first window (W x W) leaves the event ambiguous. Its
-confidence is then the share of those estimates within a pixel of the prior (0 when the left-right check
-contradicts it).
-
-**Past the other camera's view.** The left camera sees the first max-disparity columns of a near object
-that the right camera does not (the right camera likewise its last ones): such an event has no counterpart
-to match, and any candidate it finds is another scene point. Where the median disparity of this sensor's
-still active estimates 5 rows up and down and 30 columns to each side (at least 3 of them) puts the
-counterpart past the other image's border, that median is the event's disparity, flagged
-STEREO_BEYOND_VIEW, with the share of those estimates within a pixel of it as its confidence. The event is
-not matched, and in COUPLED its lifetime comes from its own plane fit. Its estimate counts for its
-neighbours in turn, so that an object's disparity reaches the image's edge from the part both cameras see.
-
-**Modes** (StereoMatchMode), all with the same outputs:
-- COUPLED: the event is matched first; on a match its lifetime is the median lifetime of the active events
-  of its polarity in the other sensor's window of getLifetimeWindow() (9) around the counterpart, and its
-  plane is not fitted; otherwise the LifetimeEstimator of its sensor fits one (or classifies it as noise).
-  After a match less confident than getLifetimeCopyConfidence(), or one whose lifetime was already passed
-  getMaxLifetimeCopies() times between the sensors, the event's own plane comes first, and it takes the
-  match's lifetime only where its fit finds none (from getMatchedLifetimeConfidence() up; below that it is
-  noise).
-- DECOUPLED: the LifetimeEstimator runs for every event, then the event is matched.
-- FIXED_INTERVAL: every event is active for getFixedInterval() microseconds; no lifetimes.
-
-What users do today, edge frames per time window and cv::StereoSGBM, is FrameStereoMatcher, with the same
-input and outputs.
-
-**Activity** (COUPLED, DECOUPLED): an event with a lifetime stays active for getActiveDistance() lifetimes
-(2.5 by default; the paper has 1), so each edge leaves a trail of 2.5 px in the descriptors: more of each
-edge to match, and more lifetimes for a weak sensor's events. Set 1 for the paper's method as published.
-Between its arrival and its decision (getLookAhead()) every event is active.
-
-**Cold start** (COUPLED, DECOUPLED): for one time window of the plane fit after the first event (after
-create() or reset(), or after a gap in the stream longer than that window), the surface cannot yet hold the
-history a fit needs. An event that gets no lifetime then stays active as if getFixedInterval() were its
-lifetime (for getActiveDistance() fixed intervals, 25 ms at the defaults), without a lifetime of its own,
-so that both sensors have something to match against from the start.
-
-**Noise** (COUPLED, DECOUPLED): afterwards an event whose plane fit finds no plane (STEREO_NOISE, lifetime 0)
-stays in the descriptors for getNoiseActiveTime(), 25 ms by default, as long as during the cold start; its
-own disparity does not count among the neighbours' estimates. On weak edges, where only some pixels fire on
-each crossing, the fit calls many of the edge's own events noise, and left out of the descriptors they take
-the edge's structure with them. The paper leaves them out: setNoiseActiveTime(0).
-
-Memory is O(sensor pixels): the per-pixel maps, an expiry heap over pixels (with setNumThreads(), up to
-three per row band: its rows next to each neighbour apart) and the two LifetimeEstimators.
-
-write() stores every parameter, the lifetime estimators' and the calibration; read() sets those a node holds
-and keeps the others, and a value out of range raises cv::Exception and changes none of them.
+Memory is O(sensor pixels): the per-pixel maps, an expiry heap over pixels (with setNumThreads(), up to three
+per row band) and the two LifetimeEstimators. write() stores every parameter, the lifetime estimators' and the
+calibration; read() sets those a node holds and keeps the others, and a value out of range raises
+cv::Exception and changes none of them.
 */
 class CV_EXPORTS_W StereoEventMatcher : public Algorithm
 {
@@ -290,7 +203,7 @@ public:
     /** @brief Recency cost: the share [%] of the window's descriptor mass (its cost against nothing) that a
     candidate pays when the other sensor's events within a pixel of it are getRecencyTime() or more apart in
     time from the event, in proportion below that (default 15; 0..100; 0: the descriptors' cost alone, as
-    published). See the class description. */
+    published). See doc/stereo.md, "The method". */
     CV_WRAP virtual int getRecencyWeight() const = 0;
     CV_WRAP virtual void setRecencyWeight(int percent) = 0;
     /** @brief Recency cost: the time apart [us] from which a candidate pays the full recency cost (default
@@ -298,7 +211,7 @@ public:
     CV_WRAP virtual double getRecencyTime() const = 0;
     CV_WRAP virtual void setRecencyTime(double us) = 0;
     /** @brief Averaging: the radius [px] of the neighbourhood whose estimates an event's output disparity is
-    averaged with (default 4; 0..5; 0: no averaging, the method as published). See the class description. */
+    averaged with (default 4; 0..5; 0: no averaging, the method as published). See doc/stereo.md, "The method". */
     CV_WRAP virtual int getAveragingRadius() const = 0;
     CV_WRAP virtual void setAveragingRadius(int px) = 0;
     /** @brief Look-ahead L [us] (COUPLED, DECOUPLED, FIXED_INTERVAL; default 10000; 0..1e6). process() puts
