@@ -21,7 +21,7 @@ public:
     }
 
     /** The method @p name, at its defaults, for sensors of @p size; std::runtime_error for an unknown name. */
-    StereoMethod(const std::string& name, cv::Size size) : name_(name)
+    StereoMethod(const std::string& name, cv::Size size)
     {
         if (!known(name))
             throw std::runtime_error("unknown stereo method \"" + name + "\": use " + names());
@@ -40,7 +40,6 @@ public:
             applyMatcherSettings(matcher, settings);
     }
 
-    const std::string& name() const { return name_; }
     /** Lifetimes come from COUPLED and DECOUPLED; a confidence from every matcher mode, not from SGBM. */
     bool hasLifetime() const
     {
@@ -95,9 +94,6 @@ public:
 
     cv::Ptr<cv::event::StereoEventMatcher> matcher;  // one of the two is set
     cv::Ptr<cv::event::FrameStereoMatcher> frames;
-
-private:
-    std::string name_;
 };
 
 #endif  // OPENCV_EVENT_COMMON_STEREO_METHOD_HPP

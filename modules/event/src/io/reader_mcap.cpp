@@ -27,8 +27,6 @@ namespace detail {
 namespace {
 
 const uchar kMcapMagic[8] = { 0x89, 'M', 'C', 'A', 'P', 0x30, '\r', '\n' };
-const char* kEventPacket2 = "event_camera_msgs/msg/EventPacket";
-const char* kLegacyEventArray2 = "event_array_msgs/msg/EventArray";  // EventPacket before its 2023 rename
 
 enum McapOpcode
 {
@@ -49,18 +47,10 @@ class McapReader CV_FINAL : public EventReader
 {
 public:
     McapReader(const String& bag, const std::vector<std::string>& files, const ReaderOptions& options)
-        : bag_(bag), files_(files), size_(options.sensorSize)
+        : files_(files), size_(options.sensorSize)
     {
-        std::vector<std::string> topics = eventTopics();
-        if (topics.empty())
-            CV_Error_(Error::StsParseError, ("%s: no %s (or %s) topic in the bag", bag.c_str(), kEventPacket2,
-                                             kLegacyEventArray2));
-        std::sort(topics.begin(), topics.end());
-        stereo_ = options.cameraFilter < 0 && topics.size() >= 2;
-        const int pick = std::max(0, options.cameraFilter);
-        if (pick >= (int)topics.size())
-            CV_Error_(Error::StsParseError, ("%s: no event topic for camera %d", bag.c_str(), pick));
-        topic_ = topics[(size_t)pick];
+        const std::vector<std::string> topics = eventTopics();  // sorted by name
+        topic_ = topics[pickRos2EventTopic(topics.size(), options.cameraFilter, bag, stereo_)];
         open(0);
         if (size_.empty())
         {
@@ -235,7 +225,7 @@ private:
             const std::string topic = c.string("channel topic", false);
             const std::string encoding = c.string("channel message encoding", false);
             const auto s = schemas_.find(schema);
-            const bool events = s != schemas_.end() && (s->second == kEventPacket2 || s->second == kLegacyEventArray2);
+            const bool events = s != schemas_.end() && (s->second == kRos2EventPacket || s->second == kRos2LegacyEventArray);
             channels_[id] = events ? topic : std::string();
             if (events && encoding != "cdr")
                 formatError(input_->path(), at, "channel " + topic + " has message encoding \"" + encoding + "\" (cdr expected)");
@@ -326,7 +316,6 @@ private:
         return topics;
     }
 
-    String bag_;
     std::vector<std::string> files_;
     size_t fileIndex_ = 0;
     std::unique_ptr<FileInput> input_;

@@ -82,9 +82,6 @@ std::vector<std::string> bagFiles(const String& path)
 
 namespace {
 
-const char* kEventPacket2 = "event_camera_msgs/msg/EventPacket";
-const char* kLegacyEventArray2 = "event_array_msgs/msg/EventArray";  // EventPacket before its 2023 rename: same layout
-
 class RosBag2Reader CV_FINAL : public EventReader
 {
 public:
@@ -145,19 +142,12 @@ private:
         // Event topics of the first file, sorted by name.
         std::vector<std::pair<std::string, int>> topics;
         sqlite3_stmt* q = prepare("SELECT name, id FROM topics WHERE type = ? OR type = ? ORDER BY name");
-        sqlite3_bind_text(q, 1, kEventPacket2, -1, SQLITE_STATIC);
-        sqlite3_bind_text(q, 2, kLegacyEventArray2, -1, SQLITE_STATIC);
+        sqlite3_bind_text(q, 1, kRos2EventPacket, -1, SQLITE_STATIC);
+        sqlite3_bind_text(q, 2, kRos2LegacyEventArray, -1, SQLITE_STATIC);
         while (sqlite3_step(q) == SQLITE_ROW)
             topics.push_back(std::make_pair(std::string((const char*)sqlite3_column_text(q, 0)), sqlite3_column_int(q, 1)));
         sqlite3_finalize(q);
-        if (topics.empty())
-            CV_Error_(Error::StsParseError, ("%s: no %s (or %s) topic in the bag", files_[0].c_str(), kEventPacket2,
-                                             kLegacyEventArray2));
-        stereo_ = options.cameraFilter < 0 && topics.size() >= 2;
-        const int pick = std::max(0, options.cameraFilter);
-        if (pick >= (int)topics.size())
-            CV_Error_(Error::StsParseError, ("%s: no event topic for camera %d", files_[0].c_str(), pick));
-        topic_ = topics[pick].first;
+        topic_ = topics[pickRos2EventTopic(topics.size(), options.cameraFilter, files_[0], stereo_)].first;
         size_ = options.sensorSize;
         startQuery();
         if (size_.empty())

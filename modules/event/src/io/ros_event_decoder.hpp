@@ -18,9 +18,30 @@
 #include "io/evt3_decoder.hpp"
 #include "io/file_input.hpp"
 
+#include <algorithm>
+
 namespace cv {
 namespace event {
 namespace detail {
+
+// ROS 2's event message type, and its name before the 2023 rename (the same layout).
+static const char kRos2EventPacket[] = "event_camera_msgs/msg/EventPacket";
+static const char kRos2LegacyEventArray[] = "event_array_msgs/msg/EventArray";
+
+/** ROS 2 bags (sqlite3 and MCAP): which of @p count event topics, sorted by name, a reader of camera
+@p cameraFilter (-1: any) delivers, and whether the bag is a stereo recording (two topics or more, no filter).
+Errors name @p where. */
+inline size_t pickRos2EventTopic(size_t count, int cameraFilter, const String& where, bool& stereo)
+{
+    if (count == 0)
+        CV_Error_(Error::StsParseError, ("%s: no %s (or %s) topic in the bag", where.c_str(), kRos2EventPacket,
+                                         kRos2LegacyEventArray));
+    stereo = cameraFilter < 0 && count >= 2;
+    const int pick = std::max(0, cameraFilter);
+    if (pick >= (int)count)
+        CV_Error_(Error::StsParseError, ("%s: no event topic for camera %d", where.c_str(), pick));
+    return (size_t)pick;
+}
 
 class RosEventDecoder
 {

@@ -11,6 +11,7 @@
 #include "stereo/disparity_rendering.hpp"
 #include "stereo/frame_sgbm_matcher.hpp"
 #include "stereo/stereo_event_input.hpp"
+#include "stereo/stereo_matcher_params.hpp"
 
 namespace cv {
 namespace event {
@@ -26,24 +27,16 @@ struct FrameStereoParams
 
     void setSensorSize(Size s)
     {
-        if (s.width <= 0 || s.height <= 0 || s.width > 32768 || s.height > 32768)
-            CV_Error_(Error::StsBadArg, ("FrameStereoMatcher: sensor size %d x %d is not valid", s.width, s.height));
+        checkSensorSize(s, "FrameStereoMatcher");
         sensorSize = s;
     }
     void setDisparityRange(int lo, int hi)
     {
-        if (lo < 0 || hi < lo || hi > 1024)
-            CV_Error_(Error::StsBadArg, ("FrameStereoMatcher: disparity range [%d, %d]; need 0 <= min <= max <= 1024",
-                                         lo, hi));
+        checkDisparityRange(lo, hi, "FrameStereoMatcher");
         minDisparity = lo;
         maxDisparity = hi;
     }
-    void setFrameWindow(double us)
-    {
-        if (!(us >= 1) || us > 1e12)
-            CV_Error_(Error::StsBadArg, ("FrameStereoMatcher: frame window %g us; must be 1 us .. 1e12 us", us));
-        frameWindow = (int64)std::llround(us);
-    }
+    void setFrameWindow(double us) { frameWindow = checkedDuration(us, "frame window", "FrameStereoMatcher"); }
 };
 
 }  // namespace
@@ -183,11 +176,7 @@ void FrameStereoMatcherImpl::read(const FileNode& fn)
     if (hasCalibration)
     {
         c.read(fn["calibration"], "FrameStereoMatcher calibration");
-        c.validate();
-        if (c.imageSize != p.sensorSize)
-            CV_Error_(Error::StsBadArg, ("FrameStereoMatcher: the calibration is for %d x %d sensors but the matcher's "
-                                         "sensor is %d x %d", c.imageSize.width, c.imageSize.height,
-                                         p.sensorSize.width, p.sensorSize.height));
+        input_.checkCalibration(c, p.sensorSize);
     }
     if (p.sensorSize != params_.sensorSize)
         setSensorSize(p.sensorSize);

@@ -28,15 +28,20 @@ void StereoEventInput::setCalibration(const StereoCalibration& calibration)
         focalBaseline_ = 0;
         return;
     }
-    calibration.validate();
-    if (calibration.imageSize != size_)
-        CV_Error_(Error::StsBadArg, ("%s: the calibration is for %d x %d sensors but the matcher's sensor is %d x %d",
-                                     owner_.c_str(), calibration.imageSize.width, calibration.imageSize.height,
-                                     size_.width, size_.height));
+    checkCalibration(calibration, size_);
     for (int c = 0; c < 2; c++)
         table_[c] = buildRectificationTable(calibration, c);
     calibration_ = calibration;
     focalBaseline_ = calibration.focalLength() * calibration.baseline();
+}
+
+void StereoEventInput::checkCalibration(const StereoCalibration& calibration, Size sensorSize) const
+{
+    calibration.validate();
+    if (calibration.imageSize != sensorSize)
+        CV_Error_(Error::StsBadArg, ("%s: the calibration is for %d x %d sensors but the matcher's sensor is %d x %d",
+                                     owner_.c_str(), calibration.imageSize.width, calibration.imageSize.height,
+                                     sensorSize.width, sensorSize.height));
 }
 
 Point StereoEventInput::admit(const Event& e)

@@ -30,6 +30,8 @@ public:
     // Empty: events are taken as rectified and have no depth. Otherwise it is validated and must be for the
     // sensor's size.
     void setCalibration(const StereoCalibration& calibration);
+    // What setCalibration() checks of a calibration for a sensor of @p sensorSize, without taking it.
+    void checkCalibration(const StereoCalibration& calibration, Size sensorSize) const;
     const StereoCalibration& calibration() const { return calibration_; }
 
     // The next event may have any time (after a reset).

@@ -20,9 +20,7 @@ int oddWindow(int n, int lo, int hi, const char* what)
 
 int64 duration(double us, const char* what)
 {
-    if (!(us >= 1) || us > 1e12)
-        CV_Error_(Error::StsBadArg, ("StereoEventMatcher: %s %g us; must be 1 us .. 1e12 us", what, us));
-    return (int64)std::llround(us);
+    return checkedDuration(us, what, "StereoEventMatcher");
 }
 
 // A share from 0 to 1; @p zero says what 0 means.
@@ -43,6 +41,25 @@ int64 upToOneSecond(double us, const char* what, const char* zero)
 
 }  // namespace
 
+void checkSensorSize(Size s, const char* owner)
+{
+    if (s.width <= 0 || s.height <= 0 || s.width > 32768 || s.height > 32768)
+        CV_Error_(Error::StsBadArg, ("%s: sensor size %d x %d is not valid", owner, s.width, s.height));
+}
+
+void checkDisparityRange(int lo, int hi, const char* owner)
+{
+    if (lo < 0 || hi < lo || hi > 1024)
+        CV_Error_(Error::StsBadArg, ("%s: disparity range [%d, %d]; need 0 <= min <= max <= 1024", owner, lo, hi));
+}
+
+int64 checkedDuration(double us, const char* what, const char* owner)
+{
+    if (!(us >= 1) || us > 1e12)
+        CV_Error_(Error::StsBadArg, ("%s: %s %g us; must be 1 us .. 1e12 us", owner, what, us));
+    return (int64)std::llround(us);
+}
+
 void StereoMatcherParams::setMode(int m)
 {
     if (m < STEREO_COUPLED || m > STEREO_FIXED_INTERVAL)
@@ -53,15 +70,13 @@ void StereoMatcherParams::setMode(int m)
 
 void StereoMatcherParams::setSensorSize(Size s)
 {
-    if (s.width <= 0 || s.height <= 0 || s.width > 32768 || s.height > 32768)
-        CV_Error_(Error::StsBadArg, ("StereoEventMatcher: sensor size %d x %d is not valid", s.width, s.height));
+    checkSensorSize(s, "StereoEventMatcher");
     sensorSize = s;
 }
 
 void StereoMatcherParams::setDisparityRange(int lo, int hi)
 {
-    if (lo < 0 || hi < lo || hi > 1024)
-        CV_Error_(Error::StsBadArg, ("StereoEventMatcher: disparity range [%d, %d]; need 0 <= min <= max <= 1024", lo, hi));
+    checkDisparityRange(lo, hi, "StereoEventMatcher");
     minDisparity = lo;
     maxDisparity = hi;
 }

@@ -11,6 +11,13 @@ namespace cv {
 namespace event {
 namespace detail {
 
+/** The checks both stereo matchers (StereoEventMatcher, FrameStereoMatcher) make of the parameters they share;
+each raises cv::Error::StsBadArg naming @p owner, the value and its valid range. */
+void checkSensorSize(Size s, const char* owner);
+void checkDisparityRange(int lo, int hi, const char* owner);
+/** A time of 1 us .. 1e12 us, rounded to whole microseconds. */
+int64 checkedDuration(double us, const char* what, const char* owner);
+
 /** StereoEventMatcher's parameters (their meaning is in the public header's getters), with their validation and
 their FileStorage form. Each setter checks its argument and raises cv::Error::StsBadArg naming the parameter and
 its valid range, leaving the struct unchanged; what a change does to the matcher's state is the matcher's. */
