@@ -61,7 +61,14 @@ void printJson(const Info& i, bool last)
                   << ", \"duration_us\": " << (i.events ? i.last - i.first : 0)
                   << ", \"rejected_outside\": " << (int64)i.rejected << ", \"time_backwards\": " << (int64)i.backwards
                   << ", \"skipped\": " << (int64)i.skipped << ", \"x_min\": " << i.xMin << ", \"x_max\": " << i.xMax
-                  << ", \"y_min\": " << i.yMin << ", \"y_max\": " << i.yMax;
+                  << ", \"y_min\": " << i.yMin << ", \"y_max\": " << i.yMax << ", \"triggers\": {";
+    for (int k = 0; !i.format.empty() && k <= EVENT_TRIGGER_GENERATOR_RISING; k++)
+    {
+        std::string name = getTriggerKindName(k);
+        std::replace(name.begin(), name.end(), ' ', '_');
+        std::cout << (k ? ", " : "") << "\"" << name << "\": " << i.triggers[k]
+                  << (k == EVENT_TRIGGER_GENERATOR_RISING ? "}" : "");
+    }
     if (!i.cameras.empty())
     {
         std::cout << ", \"statistics\": [";
@@ -110,6 +117,15 @@ void printText(const Info& i)
         std::cout << "  pixels:    x " << i.xMin << ".." << i.xMax << ", y " << i.yMin << ".." << i.yMax << "\n";
     if (i.stereo)
         std::cout << "  cameras:   left " << i.left << ", right " << i.events - i.left << "\n";
+    int64 triggers = 0;
+    std::string kinds;
+    for (int k = 0; k <= EVENT_TRIGGER_GENERATOR_RISING; k++)
+        if (i.triggers[k] > 0)
+        {
+            kinds += (triggers ? ", " : " (") + getTriggerKindName(k) + " " + std::to_string(i.triggers[k]);
+            triggers += i.triggers[k];
+        }
+    std::cout << "  triggers:  " << triggers << (triggers ? kinds + ")" : std::string()) << "\n";
     std::cout << "  time:      " << i.first << " .. " << i.last << " us, duration "
               << (i.events ? (i.last - i.first) / 1e6 : 0.0) << " s\n"
               << "  rejected:  " << (int64)i.rejected << " outside the sensor, " << (int64)i.backwards

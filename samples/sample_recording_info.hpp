@@ -26,6 +26,7 @@ struct Info
     bool statisticsNeedSensor = false;  // --stats asked for, but neither the format nor --sensor gives the size
     bool oneBased = false;              // --one-based (for the advice on events outside the sensor)
     double rejected = 0, backwards = 0, skipped = 0;
+    int64 triggers[EVENT_TRIGGER_GENERATOR_RISING + 1] = {};  // trigger events by EventTriggerKind
     std::vector<EventStreamStatistics> cameras;  // --stats: per camera (left, right), or one for mono
 };
 
@@ -108,9 +109,13 @@ inline Info probe(const std::string& path, Size sensor, bool oneBased, int leftV
         info.statisticsNeedSensor = withStatistics && info.size.empty();
         info.oneBased = oneBased;
         std::vector<Event> packet;
+        std::vector<EventTrigger> triggers;
         while (cap.read(packet))
         {
             countPacket(info, packet, statistics);
+            cap.retrieveTriggers(triggers);
+            for (const EventTrigger& t : triggers)
+                info.triggers[t.kind]++;
         }
     }
     catch (const cv::Exception& e)

@@ -181,6 +181,16 @@ for pair in "aestream_davis346.aedat4:DAVIS346 sample (aestream, mono)" "tonic_s
   expect doc/simulator.md "$row" "event_info --stats ${pair%%:*}"
 done
 
+# The trigger events of the evt3 bags (doc/reading_recordings.md): event_info's count by kind.
+triggers() { "$samples/event_info" "$shared/format_samples/$1" | sed -n 's/^  triggers:  \([0-9]*\) (falling \([0-9]*\), rising \([0-9]*\))$/\1 \2 \3/p'; }
+read -r total falling rising < <(triggers ecpy_test_events_1_ros1.bag)
+expect doc/reading_recordings.md "holds $(thousands "$total")" "event_info ecpy_test_events_1_ros1.bag: triggers"
+expect doc/reading_recordings.md "$(thousands "$rising") rising, $(thousands "$falling") falling edges" \
+  "event_info ecpy_test_events_1_ros1.bag: triggers by kind"
+read -r total falling rising < <(triggers ecpy_legacy_eventarray_ros2)
+expect doc/reading_recordings.md "\`test_events_ros2_1\` $total" "event_info ecpy_legacy_eventarray_ros2: triggers"
+expect doc/reading_recordings.md "($rising and $falling)" "event_info ecpy_legacy_eventarray_ros2: triggers by kind"
+
 # The hot-pixel filter on each TUM recording (doc/filters.md, its command), at relativeRate 10 and 5: the
 # events removed, as the table writes them ("0", or "N (x %)", two decimals below 0.1 %).
 removedText() {  # removedText KEPT TOTAL

@@ -75,6 +75,24 @@ assert ok and np.array_equal(back, packet)
 ok, back = cap.read()
 assert not ok
 
+# Trigger events of a packet, viewed with the documented dtype: an EVT 2.0 file with one event at 64000 us and a
+# rising edge on channel 3 at 64005 us.
+raw = os.path.join(tempfile.mkdtemp(), "triggers.raw")
+with open(raw, "wb") as f:
+    f.write(b"% evt 2.0\n% geometry 640x480\n")
+    words = [(0x8 << 28) | 1000, (1 << 28) | (7 << 11) | 9, (0xA << 28) | (5 << 22) | (3 << 8) | 1]
+    f.write(np.array(words, "<u4").tobytes())
+cap = ev.EventCapture(raw)
+ok, events = cap.read()
+assert ok and events.shape == (1, 1, 16)
+ok, triggers = cap.retrieveTriggers()
+assert ok and triggers.shape == (1, 1, 16) and triggers.dtype == np.uint8, triggers.shape
+trigger_dtype = np.dtype([("t", "<i8"), ("channel", "<i2"), ("kind", "u1"), ("camera", "u1"), ("reserved", "<u4")])
+record = triggers.reshape(-1, 16).view(trigger_dtype).ravel()[0]
+assert (record["t"], record["channel"], record["kind"]) == (64005, 3, ev.EVENT_TRIGGER_RISING), record
+assert ev.getTriggerKindName(int(record["kind"])) == "rising"
+assert cap.get(ev.EVENT_CAP_PROP_TRIGGERS) == 1
+
 # Stereo merge with camera ids.
 merged = ev.mergeStereoEvents(packet, packet)
 tm, xm, ym, pm, cm = ev.unpackEvents(merged)

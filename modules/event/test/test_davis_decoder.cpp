@@ -122,7 +122,33 @@ TEST(Event_DavisDecoder, aps_imu_and_special_words_are_not_events)
     const std::vector<Event> ev = decodeAll(d, s.bytes);
     ASSERT_EQ(1u, ev.size());
     EXPECT_EQ(Event(10, 9, 2, 1), ev[0]);
-    EXPECT_EQ(3 + 16, d.counters().otherWords);
+    EXPECT_EQ(3 + 11, d.counters().otherWords);  // the 16 special words but the five trigger ones
+    EXPECT_EQ(5, d.counters().triggers);
+}
+
+TEST(Event_DavisDecoder, external_input_words_are_triggers_on_the_event_clock)
+{
+    // Special word 3 = rising, 2 = falling, 4 = pulse, 17 / 16 = the generator's rising / falling edge, each
+    // at the time of the timestamp word before it; before the first reset (when waiting for one) none counts.
+    WordStream s;
+    s.word(timestampWord(5)).word(3);
+    s.word(1);  // the timestamp reset: time 0 from here
+    s.word(timestampWord(100)).word(3).word(timestampWord(250)).word(2);
+    s.word(wrapWord(2)).word(timestampWord(7)).word(4).word(17).word(16);
+    DavisEventDecoder d(240, 180, false, true);
+    d.arm(0);
+    decodeAll(d, s.bytes);
+    std::vector<EventTrigger> triggers;
+    d.takeTriggers(triggers);
+    const std::vector<EventTrigger> expected = {
+        EventTrigger(100, EVENT_TRIGGER_RISING), EventTrigger(250, EVENT_TRIGGER_FALLING),
+        EventTrigger(65536 + 7, EVENT_TRIGGER_PULSE), EventTrigger(65536 + 7, EVENT_TRIGGER_GENERATOR_RISING),
+        EventTrigger(65536 + 7, EVENT_TRIGGER_GENERATOR_FALLING) };
+    EXPECT_EQ(expected, triggers);
+    EXPECT_EQ(6, d.counters().triggers);
+    triggers.clear();
+    d.takeTriggers(triggers);
+    EXPECT_TRUE(triggers.empty());
 }
 
 TEST(Event_DavisDecoder, transfer_boundaries_anywhere_give_the_same_events)

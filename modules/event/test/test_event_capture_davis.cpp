@@ -524,4 +524,40 @@ TEST(Event_Capture_Davis, time_windows_close_on_the_camera_clock)
     EXPECT_EQ(91000, cap.get(EVENT_CAP_PROP_POS_US));
 }
 
+TEST(Event_Capture_Davis, external_input_edges_come_out_as_triggers_once_enabled)
+{
+    // With EVENT_CAP_PROP_DEVICE_EXTERNAL_INPUT = 1 the detector runs (EXTINPUT module 4: rising and falling
+    // edges, no pulses, RUN_DETECTOR after the start); special words 3 / 2 are rising / falling edges.
+    FakeUsb usb;
+    Ptr<FakeCamera> cam = usb.add(5, 346, 260);
+    std::vector<uint8_t> bytes = encodeEvents({ Event(1000, 3, 4, 1) });
+    WordStream s;
+    s.word(timestampWord(1500)).word(3).word(timestampWord(2500)).word(2);
+    bytes.insert(bytes.end(), s.bytes.begin(), s.bytes.end());
+    const std::vector<uint8_t> later = encodeEvents({ Event(3000, 5, 6, 0) });
+    bytes.insert(bytes.end(), later.begin(), later.end());
+    appendClockWords(bytes, 3000 + 0x8000);
+    cam->afterReset = bytes;
+    EventCapture cap;
+    ASSERT_TRUE(cap.set(EVENT_CAP_PROP_DEVICE_EXTERNAL_INPUT, 1));
+    ASSERT_TRUE(cap.open("davis:0"));
+    EXPECT_EQ(1.0, cap.get(EVENT_CAP_PROP_DEVICE_EXTERNAL_INPUT));
+    const int started = usb.log->find(0, 1, 3, 1);  // DVS RUN
+    ASSERT_NE(-1, started);
+    EXPECT_NE(-1, usb.log->find(0, 4, 0, 1, started));  // the detector runs once the camera does
+    std::map<std::pair<int, int>, uint32_t> cfg = usb.log->lastValues(0);
+    EXPECT_EQ(1u, cfg[std::make_pair(4, 1)]);
+    EXPECT_EQ(1u, cfg[std::make_pair(4, 2)]);
+    EXPECT_EQ(0u, cfg[std::make_pair(4, 3)]);
+    cap.set(EVENT_CAP_PROP_WINDOW_US, 10000);
+    std::vector<Event> packet;
+    std::vector<EventTrigger> triggers;
+    ASSERT_TRUE(cap.read(packet));
+    EXPECT_EQ(2u, packet.size());
+    cap.retrieveTriggers(triggers);
+    const std::vector<EventTrigger> expected = { EventTrigger(1500, EVENT_TRIGGER_RISING),
+                                                 EventTrigger(2500, EVENT_TRIGGER_FALLING) };
+    EXPECT_EQ(expected, triggers);
+}
+
 }}  // namespace

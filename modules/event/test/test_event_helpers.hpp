@@ -37,6 +37,20 @@ inline std::vector<cv::event::Event> readAllEvents(cv::event::EventCapture& cap,
     return all;
 }
 
+/** Every trigger event @p cap delivers with its packets (read in batches of @p batch events), in order. */
+inline std::vector<cv::event::EventTrigger> readAllTriggers(cv::event::EventCapture& cap, int batch = 1 << 20)
+{
+    cap.set(cv::event::EVENT_CAP_PROP_BATCH_EVENTS, batch);
+    std::vector<cv::event::Event> packet;
+    std::vector<cv::event::EventTrigger> triggers, all;
+    while (cap.read(packet))
+    {
+        cap.retrieveTriggers(triggers);
+        all.insert(all.end(), triggers.begin(), triggers.end());
+    }
+    return all;
+}
+
 /** Writes @p content to a fresh temporary file with the given suffix and returns its path. */
 inline std::string writeTempFile(const std::string& content, const std::string& suffix)
 {

@@ -18,13 +18,13 @@ uint32_t davisAddress(int rawX, int rawY, int on)
     return ((uint32_t)rawY << 22) | ((uint32_t)rawX << 12) | ((uint32_t)on << 11);
 }
 
-TEST(Event_Capture_Aedat2, davis240_records_flip_to_top_left_and_skip_non_dvs)
+TEST(Event_Capture_Aedat2, davis240_records_flip_to_top_left_and_skip_non_dvs_but_external_events_are_triggers)
 {
     std::string f = "#!AER-DAT2.0\r\n# This is a raw AE data file\r\n# AEChip: eu.seebetter.ini.chips.davis.DAVIS240C\r\n";
     appendBE(f, davisAddress(0, 0, 1), 4);  appendBE(f, 1000, 4);        // bottom-left raw -> (239, 179)
     appendBE(f, davisAddress(239, 179, 0), 4); appendBE(f, 1010, 4);    // -> (0, 0), OFF
     appendBE(f, 0x80000000u | davisAddress(5, 5, 0), 4); appendBE(f, 1020, 4);  // APS sample: not an event
-    appendBE(f, davisAddress(3, 4, 1) | 0x400u, 4); appendBE(f, 1030, 4);       // external event: skipped
+    appendBE(f, davisAddress(3, 4, 1) | 0x400u, 4); appendBE(f, 1030, 4);       // external event: a trigger
     appendBE(f, davisAddress(9, 10, 1), 4); appendBE(f, 0xFFFFFFF0u, 4);
     appendBE(f, davisAddress(9, 11, 0), 4); appendBE(f, 0x10u, 4);      // 32-bit wrap
     appendBE(f, davisAddress(300, 0, 0), 4); appendBE(f, 0x20u, 4);     // raw x beyond 240: outside
@@ -40,6 +40,9 @@ TEST(Event_Capture_Aedat2, davis240_records_flip_to_top_left_and_skip_non_dvs)
     EXPECT_EQ(Event(0xFFFFFFF0LL, 230, 169, POLARITY_ON), ev[2]);
     EXPECT_EQ(Event((1LL << 32) + 0x10, 230, 168, POLARITY_OFF), ev[3]);
     EXPECT_EQ(1.0, cap.get(EVENT_CAP_PROP_REJECTED_OUTSIDE));
+    EventCapture again(path);
+    const std::vector<EventTrigger> expected = { EventTrigger(1030, EVENT_TRIGGER_PULSE) };  // no edge recorded
+    EXPECT_EQ(expected, readAllTriggers(again));
     std::remove(path.c_str());
 }
 
@@ -49,13 +52,16 @@ TEST(Event_Capture_Aedat2, dvs128_polarity_bit_zero_is_on_and_version_1_records)
     std::string f = "#!AER-DAT2.0\n# AEChip: ch.unizh.ini.jaer.chip.retina.DVS128\n";
     appendBE(f, (10u << 8) | (20u << 1) | 0u, 4); appendBE(f, 50, 4);   // raw (20, 10) ON -> (107, 117)
     appendBE(f, (0u << 8) | (127u << 1) | 1u, 4); appendBE(f, 60, 4);   // raw (127, 0) OFF -> (0, 127)
-    appendBE(f, 0x8000u, 4); appendBE(f, 70, 4);                        // sync event
+    appendBE(f, 0x8000u, 4); appendBE(f, 70, 4);                        // sync event: a trigger
     std::string path = writeTempFile(f, ".aedat");
     EventCapture cap(path);
     std::vector<Event> ev = readAllEvents(cap);
     ASSERT_EQ(2u, ev.size());
     EXPECT_EQ(Event(50, 107, 117, POLARITY_ON), ev[0]);
     EXPECT_EQ(Event(60, 0, 127, POLARITY_OFF), ev[1]);
+    EventCapture again(path);
+    const std::vector<EventTrigger> expected = { EventTrigger(70, EVENT_TRIGGER_PULSE) };
+    EXPECT_EQ(expected, readAllTriggers(again));
     std::remove(path.c_str());
 
     // AEDAT 1.0: no version line, 6-byte records {int16 address, int32 t}.

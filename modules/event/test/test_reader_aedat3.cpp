@@ -58,6 +58,44 @@ TEST(Event_Capture_Aedat3, polarity_packets_overflow_and_skipped_types)
     std::remove(path.c_str());
 }
 
+void special(std::string& s, int type, bool valid, int32_t t)
+{
+    appendLE(s, ((uint32_t)type << 1) | (valid ? 1u : 0u), 4);
+    appendLE(s, (uint32_t)t, 4);
+}
+
+TEST(Event_Capture_Aedat3, special_events_of_the_external_inputs_are_triggers)
+{
+    // libcaer's special event types: 2 / 3 / 4 rising / falling / pulse on input 0, 6..8 on input 1, 9..11 on
+    // input 2, 12 / 13 the generator's rising / falling edge; 0 / 1 (time wrap / reset), 5 (row only) and
+    // 14..17 (APS markers) are not triggers, nor is an invalidated event.
+    std::string f = kHeader;
+    packetHeader(f, 1, 8, 4, 0, 1);
+    polarity(f, 1, 2, 1, true, 50);
+    packetHeader(f, 0, 8, 4, 1, 11);              // tsOverflow 1: + 2^31 us
+    special(f, 1, true, 10);
+    special(f, 3, true, 100);
+    special(f, 2, true, 110);
+    special(f, 4, false, 120);
+    special(f, 8, true, 130);
+    special(f, 9, true, 140);
+    special(f, 13, true, 150);
+    special(f, 5, true, 160);
+    special(f, 14, true, 170);
+    special(f, 12, true, 180);
+    special(f, 7, true, 190);
+    const std::string path = writeTempFile(f, ".aedat");
+    EventCapture cap(path);
+    const int64 o = 1LL << 31;
+    const std::vector<EventTrigger> expected = {
+        EventTrigger(o + 100, EVENT_TRIGGER_FALLING), EventTrigger(o + 110, EVENT_TRIGGER_RISING),
+        EventTrigger(o + 130, EVENT_TRIGGER_PULSE, 1), EventTrigger(o + 140, EVENT_TRIGGER_RISING, 2),
+        EventTrigger(o + 150, EVENT_TRIGGER_GENERATOR_FALLING), EventTrigger(o + 180, EVENT_TRIGGER_GENERATOR_RISING),
+        EventTrigger(o + 190, EVENT_TRIGGER_FALLING, 1) };
+    EXPECT_EQ(expected, readAllTriggers(cap));
+    std::remove(path.c_str());
+}
+
 TEST(Event_Capture_Aedat3, absurd_and_truncated_packets_are_errors)
 {
     // A packet that claims 2^31 - 1 events must be refused without allocating them.

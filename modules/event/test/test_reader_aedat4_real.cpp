@@ -47,4 +47,13 @@ TEST(Event_Capture_Real, aedat4_samples_counts_sizes_and_durations)
     }
 }
 
+// The DAVIS346 sample's trigger stream holds 15 APS frame and exposure markers (DV trigger types 6..9), which
+// are not trigger events: it is read, and gives none.
+TEST(Event_Capture_Real, aedat4_trigger_stream_of_frame_markers_gives_no_triggers)
+{
+    EventCapture cap(requireSharedData("format_samples/aestream_davis346.aedat4"));
+    EXPECT_TRUE(readAllTriggers(cap).empty());
+    EXPECT_EQ(0.0, cap.get(EVENT_CAP_PROP_TRIGGERS));
+}
+
 }} // namespace

@@ -42,6 +42,129 @@ TEST(Event_Capture_Raw, evt2_words_from_the_documented_layout)
     std::remove(path.c_str());
 }
 
+TEST(Event_Capture_Raw, evt2_and_evt3_external_triggers_on_the_event_clock)
+{
+    // EVT 2.0: type 0xA, bits 27..22 the time's low 6 bits, 12..8 the channel, bit 0 the edge (1 rising).
+    std::string f2 = "% evt 2.0\n% geometry 640x480\n";
+    appendWord<uint32_t>(f2, (0xAu << 28) | 1u);                          // before any time base: dropped
+    appendWord<uint32_t>(f2, (0x8u << 28) | 1000u);
+    appendWord<uint32_t>(f2, evt2Cd(1, 5, 100, 200));
+    appendWord<uint32_t>(f2, (0xAu << 28) | (7u << 22) | (31u << 8) | 1u);  // rising, channel 31, t = 64007
+    appendWord<uint32_t>(f2, (0xAu << 28) | (9u << 22) | (2u << 8));        // falling, channel 2, t = 64009
+    // EVT 3.0: type 0xA, bits 11..8 the channel, bit 0 the edge, at the current TIME_HIGH / TIME_LOW.
+    std::string f3 = "% format EVT3;height=720;width=1280\n% end\n";
+    auto w = [&](int type, int payload) { appendWord<uint16_t>(f3, (uint16_t)((type << 12) | payload)); };
+    w(0xA, 1);                         // before any TIME_HIGH: dropped
+    w(0x8, 1); w(0x6, 10);             // t = 4106
+    w(0x0, 5); w(0x2, 7);              // an event
+    w(0xA, (15 << 8) | 1);             // rising, channel 15
+    w(0x6, 20); w(0xA, 3 << 8);        // falling, channel 3, t = 4116
+    const std::string path2 = writeTempFile(f2, ".raw"), path3 = writeTempFile(f3, ".raw");
+    EventCapture cap2(path2), cap3(path3);
+    const std::vector<EventTrigger> expected2 = { EventTrigger((1000 << 6) + 7, EVENT_TRIGGER_RISING, 31),
+                                                  EventTrigger((1000 << 6) + 9, EVENT_TRIGGER_FALLING, 2) };
+    const std::vector<EventTrigger> expected3 = { EventTrigger(4106, EVENT_TRIGGER_RISING, 15),
+                                                  EventTrigger(4116, EVENT_TRIGGER_FALLING, 3) };
+    EXPECT_EQ(expected2, readAllTriggers(cap2));
+    EXPECT_EQ(expected3, readAllTriggers(cap3));
+    EXPECT_EQ(2.0, cap2.get(EVENT_CAP_PROP_TRIGGERS));
+    EXPECT_EQ(2.0, cap3.get(EVENT_CAP_PROP_TRIGGERS));
+    std::remove(path2.c_str());
+    std::remove(path3.c_str());
+}
+
+// An EVT 2.0 recording: events at @p eventTimes (x = their index) and rising triggers at @p triggerTimes on
+// channel @p channel, in time order (times below 64 share the first TIME_HIGH).
+std::string evt2Recording(const std::vector<int>& eventTimes, const std::vector<int>& triggerTimes, int channel)
+{
+    std::string f = "% evt 2.0\n% geometry 640x480\n";
+    std::vector<std::pair<int, int> > items;  // (time, -1 trigger / event index)
+    for (size_t i = 0; i < eventTimes.size(); i++)
+        items.push_back(std::make_pair(eventTimes[i], (int)i));
+    for (int t : triggerTimes)
+        items.push_back(std::make_pair(t, -1));
+    std::stable_sort(items.begin(), items.end(),
+                     [](const std::pair<int, int>& a, const std::pair<int, int>& b) { return a.first < b.first; });
+    int high = -1;
+    for (const auto& item : items)
+    {
+        if (item.first >> 6 != high)
+        {
+            high = item.first >> 6;
+            appendWord<uint32_t>(f, (0x8u << 28) | (uint32_t)high);
+        }
+        const uint32_t low = (uint32_t)(item.first & 63);
+        if (item.second < 0)
+            appendWord<uint32_t>(f, (0xAu << 28) | (low << 22) | ((uint32_t)channel << 8) | 1u);
+        else
+            appendWord<uint32_t>(f, evt2Cd(1, (int)low, item.second, 0));
+    }
+    return f;
+}
+
+std::vector<int64> triggerTimesOf(const std::vector<EventTrigger>& triggers)
+{
+    std::vector<int64> t;
+    for (const EventTrigger& x : triggers)
+        t.push_back(x.t);
+    return t;
+}
+
+TEST(Event_Capture_Triggers, each_packet_takes_the_triggers_of_its_time)
+{
+    // Events at 100..400 us; triggers before the first event, inside, on a window's end and after the last one.
+    const std::string path = writeTempFile(evt2Recording({ 100, 150, 250, 400 }, { 20, 120, 200, 260, 900 }, 0), ".raw");
+    EventCapture windows(path);
+    windows.set(EVENT_CAP_PROP_WINDOW_US, 100);  // windows [100, 200), [200, 300), [300, 400), [400, 500)
+    std::vector<Event> packet;
+    std::vector<EventTrigger> triggers;
+    const std::vector<std::vector<int64> > expected = { { 20, 120 }, { 200, 260 }, {}, { 900 } };
+    for (const std::vector<int64>& times : expected)
+    {
+        ASSERT_TRUE(windows.read(packet));
+        EXPECT_TRUE(windows.retrieveTriggers(triggers));
+        EXPECT_EQ(times, triggerTimesOf(triggers));
+    }
+    EXPECT_FALSE(windows.read(packet));
+    EXPECT_FALSE(windows.retrieveTriggers(triggers));
+    EXPECT_TRUE(triggers.empty());
+    EXPECT_EQ(5.0, windows.get(EVENT_CAP_PROP_TRIGGERS));
+
+    // Batches of two events: up to the batch's last event, the last batch takes the rest.
+    EventCapture batches(path);
+    batches.set(EVENT_CAP_PROP_BATCH_EVENTS, 2);
+    ASSERT_TRUE(batches.read(packet));
+    batches.retrieveTriggers(triggers);
+    EXPECT_EQ(std::vector<int64>({ 20, 120 }), triggerTimesOf(triggers));
+    ASSERT_TRUE(batches.read(packet));
+    batches.retrieveTriggers(triggers);
+    EXPECT_EQ(std::vector<int64>({ 200, 260, 900 }), triggerTimesOf(triggers));
+
+    // A seek skips the triggers before its target, with the events.
+    EventCapture seeking(path);
+    seeking.set(EVENT_CAP_PROP_WINDOW_US, 100);
+    ASSERT_TRUE(seeking.set(EVENT_CAP_PROP_POS_US, 250));
+    ASSERT_TRUE(seeking.read(packet));
+    seeking.retrieveTriggers(triggers);
+    EXPECT_EQ(std::vector<int64>({ 260 }), triggerTimesOf(triggers));
+    std::remove(path.c_str());
+}
+
+TEST(Event_Capture_Triggers, a_stereo_pair_stamps_each_trigger_with_its_camera_and_the_right_offset)
+{
+    const std::string left = writeTempFile(evt2Recording({ 100, 300 }, { 150 }, 1), ".raw");
+    const std::string right = writeTempFile(evt2Recording({ 100, 300 }, { 120, 250 }, 2), ".raw");
+    EventCapture cap;
+    cap.set(EVENT_CAP_PROP_RIGHT_TIME_OFFSET_US, 50);
+    ASSERT_TRUE(cap.openStereo(left, right));
+    const std::vector<EventTrigger> expected = { EventTrigger(150, EVENT_TRIGGER_RISING, 1, CAMERA_LEFT),
+                                                 EventTrigger(170, EVENT_TRIGGER_RISING, 2, CAMERA_RIGHT),
+                                                 EventTrigger(300, EVENT_TRIGGER_RISING, 2, CAMERA_RIGHT) };
+    EXPECT_EQ(expected, readAllTriggers(cap, 1));
+    std::remove(left.c_str());
+    std::remove(right.c_str());
+}
+
 TEST(Event_Capture_Raw, evt3_vectors_time_rules_and_24bit_loop)
 {
     std::string f = "% format EVT3;height=720;width=1280\n% end\n";

@@ -269,6 +269,39 @@ TEST(Event_Capture_Real, rosbag1_evt3_event_packets)
     EXPECT_EQ(0.0, cap.get(EVENT_CAP_PROP_TIME_BACKWARDS));
 }
 
+// event_camera_py's test of this bag (tests/test_1.py): the sum of every event's and trigger's time is
+// 2885601049874 us, and 2078 triggers have edge value 0 (falling; its counter calls them rising and never
+// checks the others). The evt3 triggers are a 1 kHz square wave on channel 6, starting with a rising edge.
+TEST(Event_Capture_Real, rosbag1_evt3_triggers)
+{
+    for (const char* file : { "format_samples/ecpy_test_events_1_ros1.bag", "format_samples/ecpy_legacy_eventarray_ros1.bag" })
+    {
+        EventCapture cap(requireSharedData(file));
+        cap.set(EVENT_CAP_PROP_WINDOW_US, 10000);
+        std::vector<Event> packet;
+        std::vector<EventTrigger> triggers;
+        int64 timeSum = 0, falling = 0, rising = 0, others = 0;
+        while (cap.read(packet))
+        {
+            cap.retrieveTriggers(triggers);
+            for (const Event& e : packet)
+                timeSum += e.t;
+            for (const EventTrigger& t : triggers)
+            {
+                timeSum += t.t;
+                falling += t.kind == EVENT_TRIGGER_FALLING && t.channel == 6;
+                rising += t.kind == EVENT_TRIGGER_RISING && t.channel == 6;
+                others += t.channel != 6;
+            }
+        }
+        EXPECT_EQ(2885601049874LL, timeSum) << file;
+        EXPECT_EQ(2078, falling) << file;
+        EXPECT_EQ(2079, rising) << file;
+        EXPECT_EQ(0, others) << file;
+        EXPECT_EQ(4157.0, cap.get(EVENT_CAP_PROP_TRIGGERS)) << file;
+    }
+}
+
 // The data README: the same recording as ecpy_test_events_1_ros1.bag, recorded as event_array_msgs/EventArray,
 // EventPacket's name before its 2023 rename: the same events, one for one.
 TEST(Event_Capture_Real, rosbag1_legacy_event_array_name)

@@ -130,4 +130,30 @@ TEST(Event_Capture_Real, rosbag2_legacy_event_array_name)
     EXPECT_EQ(139584u, on);
 }
 
+// The data README: 18 rising and 18 falling trigger events; event_camera_py's test of this bag
+// (tests/test_ros2_1.py): the sum of every event's and trigger's time is 6024891770230 us.
+TEST(Event_Capture_Real, rosbag2_legacy_event_array_triggers)
+{
+    EventCapture cap(requireSharedData("format_samples/ecpy_legacy_eventarray_ros2"));
+    cap.set(EVENT_CAP_PROP_BATCH_EVENTS, 30000);
+    std::vector<Event> packet;
+    std::vector<EventTrigger> triggers;
+    int64 timeSum = 0, kinds[2] = { 0, 0 };
+    while (cap.read(packet))
+    {
+        cap.retrieveTriggers(triggers);
+        for (const Event& e : packet)
+            timeSum += e.t;
+        for (const EventTrigger& t : triggers)
+        {
+            timeSum += t.t;
+            ASSERT_LE((int)t.kind, (int)EVENT_TRIGGER_RISING);
+            kinds[t.kind]++;
+        }
+    }
+    EXPECT_EQ(6024891770230LL, timeSum);
+    EXPECT_EQ(18, kinds[EVENT_TRIGGER_RISING]);
+    EXPECT_EQ(18, kinds[EVENT_TRIGGER_FALLING]);
+}
+
 }} // namespace

@@ -9,6 +9,7 @@
 #include "opencv2/event/event_surface.hpp"
 #include "opencv2/event/event_statistics.hpp"
 #include "opencv2/event/event_filter.hpp"
+#include "opencv2/event/event_trigger.hpp"
 #include "opencv2/event/event_capture.hpp"
 #include "opencv2/event/event_writer.hpp"
 #include "opencv2/event/simulator.hpp"

@@ -218,6 +218,8 @@ void DavisDevice::start(int transfers, int transferBytes)
     writeConfig(MUX, MUX_RUN, 1);
     sleepMs(50);
     writeConfig(DVS, DVS_RUN, 1);
+    if (externalInput_)
+        writeConfig(EXTINPUT, EXTINPUT_RUN_DETECTOR, 1);
 }
 
 bool DavisDevice::stop()
@@ -313,6 +315,16 @@ bool DavisDevice::setProperty(int propId, double value)
             return false;
         resetTimestamp();
         return true;
+    case EVENT_CAP_PROP_DEVICE_EXTERNAL_INPUT:
+        if (v != 0 && v != 1)
+            return false;
+        externalInput_ = v == 1;
+        writeConfig(EXTINPUT, EXTINPUT_DETECT_RISING_EDGES, 1);
+        writeConfig(EXTINPUT, EXTINPUT_DETECT_FALLING_EDGES, 1);
+        writeConfig(EXTINPUT, EXTINPUT_DETECT_PULSES, 0);
+        if (running_)
+            writeConfig(EXTINPUT, EXTINPUT_RUN_DETECTOR, externalInput_ ? 1 : 0);
+        return true;
     default: return false;
     }
 }
@@ -324,6 +336,7 @@ bool DavisDevice::getProperty(int propId, double& value) const
     case EVENT_CAP_PROP_DEVICE_BIAS_PRESET: value = 0; return true;
     case EVENT_CAP_PROP_DEVICE_BIAS_SELECT: value = biasSelect_; return true;
     case EVENT_CAP_PROP_DEVICE_BA_FILTER: value = backgroundActivity_ ? 1 : 0; return true;
+    case EVENT_CAP_PROP_DEVICE_EXTERNAL_INPUT: value = externalInput_ ? 1 : 0; return true;
     case EVENT_CAP_PROP_DEVICE_BA_FILTER_TIME_US: value = backgroundActivityTimeUs_; return true;
     case EVENT_CAP_PROP_DEVICE_ROI_X: value = roi_.x; return true;
     case EVENT_CAP_PROP_DEVICE_ROI_Y: value = roi_.y; return true;

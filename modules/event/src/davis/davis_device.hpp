@@ -69,6 +69,7 @@ private:
     DavisIdentity identity_;
     bool running_ = false;
     bool backgroundActivity_ = true;
+    bool externalInput_ = false;  // edges on the external input become trigger events
     int backgroundActivityTimeUs_ = 2000;
     Rect roi_;
     int biasSelect_ = 0;

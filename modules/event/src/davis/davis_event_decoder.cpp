@@ -16,6 +16,20 @@ namespace {
 enum WordCode { CODE_SPECIAL = 0, CODE_Y = 1, CODE_X_OFF = 2, CODE_X_ON = 3, CODE_APS = 4, CODE_MISC8 = 5,
                 CODE_MISC10 = 6, CODE_WRAP = 7 };
 const int kSpecialTimestampReset = 1;
+
+// Special words of the external-input and generator modules, as trigger kinds (-1: not a trigger).
+int triggerKindOfSpecial(int value)
+{
+    switch (value)
+    {
+    case 2: return EVENT_TRIGGER_FALLING;
+    case 3: return EVENT_TRIGGER_RISING;
+    case 4: return EVENT_TRIGGER_PULSE;
+    case 16: return EVENT_TRIGGER_GENERATOR_FALLING;
+    case 17: return EVENT_TRIGGER_GENERATOR_RISING;
+    default: return -1;
+    }
+}
 const int64 kWrapUs = 0x8000;
 
 }  // namespace
@@ -37,6 +51,12 @@ void DavisEventDecoder::disarm()
 {
     armed_ = false;
     synchronised_ = false;
+}
+
+void DavisEventDecoder::takeTriggers(std::vector<EventTrigger>& out)
+{
+    out.insert(out.end(), triggers_.begin(), triggers_.end());
+    triggers_.clear();
 }
 
 void DavisEventDecoder::decode(const uint8_t* data, size_t size, std::vector<Event>& out, int camera)
@@ -73,6 +93,12 @@ void DavisEventDecoder::decode(const uint8_t* data, size_t size, std::vector<Eve
                 wrapBase_ = 0;
                 current_ = epochOffset_;
                 lastRow_ = -1;
+            }
+            else if (triggerKindOfSpecial(value) >= 0)
+            {
+                counters_.triggers++;
+                if (synchronised_)
+                    triggers_.push_back(EventTrigger(current_, triggerKindOfSpecial(value), 0, camera));
             }
             else
                 counters_.otherWords++;

@@ -39,6 +39,9 @@ public:
     /** Decodes one transfer and appends its DVS events (camera = @p camera) to @p out. A transfer of odd
     length has a trailing byte that is no word: it is dropped and counted in oddBytes. */
     void decode(const uint8_t* data, size_t size, std::vector<Event>& out, int camera = CAMERA_LEFT);
+    /** Moves the trigger events decoded so far (external-input and generator words once synchronised, with
+    the camera of their decode() call) to the end of @p out. */
+    void takeTriggers(std::vector<EventTrigger>& out);
 
     /** Device time [us] of the last timestamp or wrap word: no later event can be older than this. */
     int64 currentTime() const { return current_; }
@@ -54,7 +57,8 @@ public:
         int64 timestampResets = 0;    //!< timestamp-reset words
         int64 staleResets = 0;        //!< of those, resets before synchronisation that were not armed
         int64 wraps = 0;              //!< timestamp-wrap words (each adds data x 32768 us)
-        int64 otherWords = 0;         //!< APS, IMU, external-input and other special words (not events)
+        int64 triggers = 0;           //!< external-input and generator words (trigger events once synchronised)
+        int64 otherWords = 0;         //!< APS, IMU and other special words (not events)
         int64 oddBytes = 0;           //!< trailing bytes of odd-length transfers
     };
     const Counters& counters() const { return counters_; }
@@ -71,6 +75,7 @@ private:
     int64 current_ = 0;      // time of the last timestamp word
     int64 epochOffset_ = 0;  // keeps time monotonic across resets after the first (see decode())
     Counters counters_;
+    std::vector<EventTrigger> triggers_;
 };
 
 }  // namespace detail

@@ -50,7 +50,8 @@ enum DvsParam : uint8_t { DVS_SIZE_COLUMNS = 0, DVS_SIZE_ROWS = 1, DVS_ORIENTATI
                           DVS_POLARITY_SUPPRESS_TYPE = 63 };
 enum ApsParam : uint8_t { APS_RUN = 4, APS_WAIT_ON_STALL = 5 };
 enum ImuParam : uint8_t { IMU_RUN_ACCELEROMETER = 2, IMU_RUN_GYROSCOPE = 3, IMU_RUN_TEMPERATURE = 4 };
-enum ExtInputParam : uint8_t { EXTINPUT_RUN_DETECTOR = 0 };
+enum ExtInputParam : uint8_t { EXTINPUT_RUN_DETECTOR = 0, EXTINPUT_DETECT_RISING_EDGES = 1,
+                                EXTINPUT_DETECT_FALLING_EDGES = 2, EXTINPUT_DETECT_PULSES = 3 };
 enum SysInfoParam : uint8_t { SYSINFO_LOGIC_VERSION = 0, SYSINFO_CHIP_IDENTIFIER = 1, SYSINFO_DEVICE_IS_MASTER = 2,
                               SYSINFO_LOGIC_CLOCK = 3, SYSINFO_ADC_CLOCK = 4, SYSINFO_USB_CLOCK = 5,
                               SYSINFO_CLOCK_DEVIATION = 6, SYSINFO_LOGIC_PATCH = 7 };

@@ -102,6 +102,7 @@ public:
         if (!queue_.empty())
         {
             out.insert(out.end(), queue_.front().events.begin(), queue_.front().events.end());
+            triggers_.insert(triggers_.end(), queue_.front().triggers.begin(), queue_.front().triggers.end());
             deliveredHorizon_ = queue_.front().horizon;
             queue_.pop_front();
             return true;
@@ -156,6 +157,7 @@ private:
     {
         std::vector<uint8_t> transfer;
         std::vector<Event> events;
+        std::vector<EventTrigger> triggers;
         int64 resetsSeen = 0;
         while (!stop_)
         {
@@ -199,7 +201,9 @@ private:
                 return;
             }
             events.clear();
+            triggers.clear();
             decoder_.decode(transfer.data(), transfer.size(), events);
+            decoder_.takeTriggers(triggers);
             if (pair_)
             {
                 pair_->publish(pairIndex_, decoder_.currentTime());
@@ -212,12 +216,16 @@ private:
                 std::lock_guard<std::mutex> lock(mutex_);
                 counters_ = decoder_.counters();
                 const int64 horizon = decoder_.synchronised() ? decoder_.currentTime() : INT64_MIN;
-                if (!events.empty())
+                if (!events.empty() || !triggers.empty())
                 {
-                    if (queue_.size() >= capacity_)
-                        droppedEvents_ += (int64)events.size();  // read() is not keeping up: counted, not silent
+                    if (queue_.size() < capacity_)
+                        queue_.push_back({ events, triggers, horizon });
                     else
-                        queue_.push_back({ events, horizon });
+                    {
+                        droppedEvents_ += (int64)events.size();  // read() is not keeping up: counted, not silent
+                        // Triggers are few and precious: they ride with the last queued chunk instead.
+                        queue_.back().triggers.insert(queue_.back().triggers.end(), triggers.begin(), triggers.end());
+                    }
                 }
                 cameraHorizon_ = horizon;
             }
@@ -277,6 +285,7 @@ private:
     struct Chunk
     {
         std::vector<Event> events;
+        std::vector<EventTrigger> triggers;
         int64 horizon;  // the camera's clock after the transfer that held them
     };
     std::deque<Chunk> queue_;

@@ -241,6 +241,12 @@ int32_t FlatTable::int32Field(int field, int32_t defaultValue) const
     return v;
 }
 
+int FlatTable::int8Field(int field, int defaultValue) const
+{
+    const uchar* p = structField(field, 1);
+    return p ? (int)(signed char)p[0] : defaultValue;
+}
+
 int64 FlatTable::int64Field(int field, int64 defaultValue) const
 {
     const uchar* p = structField(field, 8);
@@ -315,9 +321,9 @@ int attrInt(const std::string& xml, size_t from, size_t to, const char* key)
 
 }  // namespace
 
-std::vector<Aedat4Stream> aedat4EventStreams(const std::string& xml)
+std::vector<Aedat4Stream> aedat4Streams(const std::string& xml, const char* typeIdentifier)
 {
-    // Each output stream is a <node name="ID"> (numeric name) whose attributes include typeIdentifier EVTS;
+    // Each output stream is a <node name="ID"> (numeric name) whose attributes include its typeIdentifier;
     // its child node "info" holds sizeX / sizeY. Scan stream by stream: enough for the DV info node.
     std::vector<size_t> starts;
     std::vector<int> ids;
@@ -336,8 +342,8 @@ std::vector<Aedat4Stream> aedat4EventStreams(const std::string& xml)
     for (size_t i = 0; i < starts.size(); i++)
     {
         const size_t from = starts[i], to = i + 1 < starts.size() ? starts[i + 1] : xml.size();
-        const size_t evts = xml.find(">EVTS<", from);
-        if (evts == std::string::npos || evts >= to)
+        const size_t type = xml.find(std::string(">") + typeIdentifier + "<", from);
+        if (type == std::string::npos || type >= to)
             continue;
         Aedat4Stream s;
         s.id = ids[i];

@@ -48,6 +48,7 @@ public:
     static FlatTable root(const uchar* buf, size_t size, const String& path, int64 offset);
 
     bool has(int field) const { return fieldOffset(field) != 0; }
+    int int8Field(int field, int defaultValue) const;
     int32_t int32Field(int field, int32_t defaultValue) const;
     int64 int64Field(int field, int64 defaultValue) const;
     std::string stringField(int field) const;
@@ -71,15 +72,15 @@ private:
     int64 offset_;
 };
 
-/** An event stream described in the info node. */
+/** A stream described in the info node. */
 struct Aedat4Stream
 {
     int id = -1;
     Size size;
 };
 
-/** The event (EVTS) streams listed in the info-node XML, in file order. */
-std::vector<Aedat4Stream> aedat4EventStreams(const std::string& xml);
+/** The streams of one type ("EVTS" events, "TRIG" triggers, ...) listed in the info-node XML, in file order. */
+std::vector<Aedat4Stream> aedat4Streams(const std::string& xml, const char* typeIdentifier);
 
 }  // namespace detail
 }  // namespace event

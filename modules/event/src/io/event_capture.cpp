@@ -135,6 +135,10 @@ public:
     bool haveLast = false;
     int64 lastDelivered = -1;
     int64 delivered = 0, rejectedOutside = 0, backwards = 0;
+    // Trigger events decoded but not yet handed out with a packet (time-ordered), those of the grabbed packet,
+    // and how many were decoded in all.
+    std::vector<EventTrigger> pendingTriggers, batchTriggers;
+    int64 triggersRead = 0;
     // A decoding error is raised when delivery reaches it, not when the chunk holding it is read ahead:
     // every event before the error is still delivered.
     String deferredError;
@@ -157,6 +161,9 @@ public:
         haveLast = false;
         lastDelivered = -1;
         delivered = rejectedOutside = backwards = 0;
+        pendingTriggers.clear();
+        batchTriggers.clear();
+        triggersRead = 0;
         deferredError.clear();
         deferredCode = Error::StsOk;
     }
@@ -309,6 +316,7 @@ public:
                 deferError(e);
             }
             chunkEndProgress = reader->progress();
+            takeTriggers();
             try
             {
                 accept();
@@ -319,6 +327,29 @@ public:
             }
         }
         return !pending.empty();
+    }
+
+    void takeTriggers()
+    {
+        const size_t before = pendingTriggers.size();
+        reader->takeTriggers(pendingTriggers);
+        triggersRead += (int64)(pendingTriggers.size() - before);
+        auto older = [](const EventTrigger& a, const EventTrigger& b) { return a.t < b.t; };
+        if (!std::is_sorted(pendingTriggers.begin(), pendingTriggers.end(), older))
+            std::stable_sort(pendingTriggers.begin(), pendingTriggers.end(), older);
+    }
+
+    // The grabbed packet's triggers: those before @p limit (or up to it, @p inclusive), or all that are left
+    // once the stream has ended.
+    void takePacketTriggers(int64 limit, bool inclusive)
+    {
+        const bool ended = pendingPos >= pending.size() && readerDone;
+        size_t n = 0;
+        while (n < pendingTriggers.size() &&
+               (ended || pendingTriggers[n].t < limit || (inclusive && pendingTriggers[n].t == limit)))
+            n++;
+        batchTriggers.assign(pendingTriggers.begin(), pendingTriggers.begin() + n);
+        pendingTriggers.erase(pendingTriggers.begin(), pendingTriggers.begin() + n);
     }
 
     void deferError(const cv::Exception& e)
@@ -378,6 +409,7 @@ public:
     bool grab()
     {
         batch.clear();
+        batchTriggers.clear();
         grabbed = false;
         if (!reader)
             return false;
@@ -394,7 +426,11 @@ public:
             }
             if (batch.empty())
                 raiseDeferredError();
+            if (!live)
+                fill();  // whether this was the last batch: then it takes the triggers after it
             grabbed = !batch.empty();
+            if (grabbed)
+                takePacketTriggers(batch.back().t, true);
             return grabbed;
         }
         // A file's stream ends with its last event; a camera's once it is gone (its windows may be empty).
@@ -427,6 +463,7 @@ public:
                 break;
         }
         windowStart = end;
+        takePacketTriggers(end, false);
         grabbed = true;  // an empty window is still a window
         return true;
     }
@@ -445,6 +482,10 @@ public:
         }
         while (fill() && pending[pendingPos].t < target)
             pendingPos++;
+        size_t before = 0;
+        while (before < pendingTriggers.size() && pendingTriggers[before].t < target)
+            before++;
+        pendingTriggers.erase(pendingTriggers.begin(), pendingTriggers.begin() + before);
         windowStart = target;
         windowStarted = true;
     }
@@ -550,6 +591,7 @@ bool EventCapture::grab()
         impl->readerDone = true;
         impl->pending.clear();
         impl->pendingPos = 0;
+        impl->batchTriggers.clear();
         if (impl->exceptionMode)
             throw;
         return false;
@@ -564,6 +606,20 @@ bool EventCapture::retrieve(OutputArray events)
         return false;
     }
     impl->retrieve(events);
+    return true;
+}
+
+bool EventCapture::retrieveTriggers(OutputArray triggers)
+{
+    if (!impl->grabbed)
+    {
+        triggers.release();
+        return false;
+    }
+    if (impl->batchTriggers.empty())
+        triggers.release();
+    else
+        Mat(impl->batchTriggers).copyTo(triggers);
     return true;
 }
 
@@ -601,6 +657,7 @@ double EventCapture::get(int propId) const
     case EVENT_CAP_PROP_STEREO: return s.reader && s.reader->isStereo() ? 1 : 0;
     case EVENT_CAP_PROP_SKIPPED: return s.reader ? (double)s.reader->skippedEvents() : 0.0;
     case EVENT_CAP_PROP_PROGRESS: return s.progress();
+    case EVENT_CAP_PROP_TRIGGERS: return (double)s.triggersRead;
     case EVENT_CAP_PROP_TEXT_TIME_UNIT: return s.options.textTimeUnit;
     case EVENT_CAP_PROP_TEXT_ONE_BASED: return s.options.textOneBased ? 1 : 0;
     case EVENT_CAP_PROP_TEXT_COLUMN_T: return s.options.textColumnT;
@@ -691,7 +748,8 @@ bool EventCapture::set(int propId, double value)
         s.options.liveQueueCapacity = v;
         return true;
     default:
-        if (propId < EVENT_CAP_PROP_DEVICE_BIAS_PRESET || propId > EVENT_CAP_PROP_DEVICE_TIMESTAMP_RESET)
+        if ((propId < EVENT_CAP_PROP_DEVICE_BIAS_PRESET || propId > EVENT_CAP_PROP_DEVICE_TIMESTAMP_RESET) &&
+            propId != EVENT_CAP_PROP_DEVICE_EXTERNAL_INPUT)
             return false;
         if (!s.reader)
         {

@@ -61,6 +61,15 @@ public:
     /** Source-specific properties (live cameras' EVENT_CAP_PROP_DEVICE_*, counters); false when not supported. */
     virtual bool setProperty(int /*propId*/, double /*value*/) { return false; }
     virtual bool getProperty(int /*propId*/, double& /*value*/) const { return false; }
+    /** Moves the trigger events decoded so far (by next() calls) to the end of @p out, in decoding order. */
+    virtual void takeTriggers(std::vector<EventTrigger>& out)
+    {
+        out.insert(out.end(), triggers_.begin(), triggers_.end());
+        triggers_.clear();
+    }
+
+protected:
+    std::vector<EventTrigger> triggers_;  // decoded, not yet taken
 };
 
 Ptr<EventReader> openTextReader(const String& path, const ReaderOptions& options);

@@ -18,9 +18,10 @@ namespace detail {
 class Evt3Decoder
 {
 public:
-    /** Decodes @p n 16-bit words, appending CD events to @p out. CD events before the first TIME_HIGH have
-    no time base: they are counted in skipped(). */
-    void decode(const uint16_t* w, size_t n, std::vector<Event>& out)
+    /** Decodes @p n 16-bit words, appending CD events to @p out and external triggers to @p triggers. CD
+    events before the first TIME_HIGH have no time base: they are counted in skipped() (triggers then are
+    dropped). */
+    void decode(const uint16_t* w, size_t n, std::vector<Event>& out, std::vector<EventTrigger>& triggers)
     {
         for (size_t i = 0; i < n; i++)
         {
@@ -56,7 +57,13 @@ public:
                 timeBase_ = (loops_ << 24) + ((int64)high << 12);
                 break;
             }
-            default: break;  // triggers, IMU, others, continued words: not CD events
+            case 0xA:                                                            // EXT_TRIGGER
+                if (haveTimeHigh_)
+                    triggers.push_back(EventTrigger(timeBase_ + timeLow_, (word & 1) ? EVENT_TRIGGER_RISING
+                                                                                    : EVENT_TRIGGER_FALLING,
+                                                    (word >> 8) & 0xF));
+                break;
+            default: break;  // IMU, others, continued words: not CD events
             }
         }
     }

@@ -6,8 +6,8 @@
 // "# AEChip: <class>" for the sensor), then big-endian records: 2.0 = {int32 address, int32 t_us},
 // 1.0 = {int16 address, int32 t_us}. Address layouts: DVS128 (bit 0 = OFF!) and DAVIS (240/346/640);
 // jAER's origin is bottom-left with x mirrored, so both coordinates are flipped to top-left.
-// APS samples, IMU samples and external/special events are not DVS events: they are not delivered and
-// not counted as lost. Timestamps are 32-bit: a drop of more than 2^31 us is a wrap.
+// APS and IMU samples are not DVS events: they are not delivered and not counted as lost. External / sync
+// events become trigger events (pulses: the record has no edge). Timestamps are 32-bit: a drop of more than 2^31 us is a wrap.
 
 #include "precomp.hpp"
 #include "io/event_reader.hpp"
@@ -132,14 +132,22 @@ private:
     {
         if (layout_ == AddressLayout::DVS128)
         {
-            if (a & 0x8000u)  // external / sync event
+            if (a & 0x8000u)  // external / sync event: jAER records no edge
+            {
+                triggers_.push_back(EventTrigger(t, EVENT_TRIGGER_PULSE));
                 return;
+            }
             const int rawY = (a >> 8) & 0x7F, rawX = (a >> 1) & 0x7F;
             out.push_back(Event(t, 127 - rawX, 127 - rawY, (a & 1u) ? POLARITY_OFF : POLARITY_ON));
             return;
         }
-        if ((a & 0x80000000u) || (a & 0x400u))  // APS / IMU sample, or external event
+        if (a & 0x80000000u)  // APS / IMU sample
             return;
+        if (a & 0x400u)  // external input event: jAER records no edge
+        {
+            triggers_.push_back(EventTrigger(t, EVENT_TRIGGER_PULSE));
+            return;
+        }
         const int rawY = (a >> 22) & 0x1FF, rawX = (a >> 12) & 0x3FF;
         // A raw address beyond the array flips to a negative coordinate: EventCapture counts it as outside.
         out.push_back(Event(t, size_.width - 1 - rawX, size_.height - 1 - rawY,

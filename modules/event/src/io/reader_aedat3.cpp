@@ -6,8 +6,9 @@
 // then packets with a 28-byte little-endian header {int16 type, int16 source, int32 eventSize,
 // int32 tsOffset, int32 tsOverflow, int32 capacity, int32 number, int32 valid} and capacity x eventSize
 // bytes of events. Polarity events (type 1): {u32 data: valid bit 0, polarity bit 1, y bits 2..16,
-// x bits 17..31; int32 t}, full time = tsOverflow << 31 | t. Other packet types are skipped by length;
-// events marked invalid by their producer are counted in EVENT_CAP_PROP_SKIPPED.
+// x bits 17..31; int32 t}, full time = tsOverflow << 31 | t. Special events (type 0) give the trigger
+// events; other packet types are skipped by length. Polarity events marked invalid by their producer are
+// counted in EVENT_CAP_PROP_SKIPPED.
 
 #include "precomp.hpp"
 #include "io/event_reader.hpp"
@@ -131,8 +132,41 @@ private:
                 if (capacity > 0)
                     return true;
             }
+            else if (type == 0 && size == 8 && tsOffset == 4)
+                readSpecialEvents(capacity, (int64)overflow << 31);
             else
                 in_.seek(in_.offset() + payload);
+        }
+    }
+
+    // Special events {u32 data: valid bit 0, type bits 1..7; int32 t}: libcaer's external-input types become
+    // trigger events (input 0, 1, 2 as the channel), the rest (time wraps and resets, row-only, APS
+    // markers) are not triggers.
+    void readSpecialEvents(int64 count, int64 overflow)
+    {
+        while (count > 0)
+        {
+            const int64 n = std::min<int64>(count, (int64)(sizeof(buffer_) / 8));
+            in_.readExact(buffer_, (size_t)(n * 8), "special events of the packet");
+            count -= n;
+            for (int64 i = 0; i < n; i++)
+            {
+                const uint32_t data = le32(buffer_ + i * 8);
+                const int64 t = overflow + (int32_t)le32(buffer_ + i * 8 + 4);
+                const int type = (int)((data >> 1) & 0x7F);
+                if (!(data & 1u))
+                    continue;
+                if (type >= 2 && type <= 11 && type != 5)  // input 0: 2..4, input 1: 6..8, input 2: 9..11
+                {
+                    const int channel = type < 5 ? 0 : (type - 3) / 3;
+                    const int edge = type < 5 ? type - 2 : (type - 6) % 3;  // 0 rising, 1 falling, 2 pulse
+                    static const int kinds[3] = { EVENT_TRIGGER_RISING, EVENT_TRIGGER_FALLING, EVENT_TRIGGER_PULSE };
+                    triggers_.push_back(EventTrigger(t, kinds[edge], channel));
+                }
+                else if (type == 12 || type == 13)
+                    triggers_.push_back(EventTrigger(t, type == 12 ? EVENT_TRIGGER_GENERATOR_RISING
+                                                                   : EVENT_TRIGGER_GENERATOR_FALLING));
+            }
         }
     }
 

@@ -4,8 +4,8 @@
 
 // AEDAT 4.0 (DV / dv-processing; layout: doc/formats.md, "AEDAT 4.0"): magic line, size-prefixed IOHeader
 // FlatBuffer (compression, data-table position, XML info node), then packets {int32 stream id, int32 size,
-// compressed size-prefixed FlatBuffer}. Only the event (EVTS) streams are decoded; frames, IMU and trigger
-// packets are skipped by length. A file with two event streams is a stereo recording: the first is the
+// compressed size-prefixed FlatBuffer}. The event (EVTS) and trigger (TRIG) streams are decoded; frames and
+// IMU packets are skipped by length. A file with two event streams is a stereo recording: the first is the
 // left camera, the second the right one. Reading stops at the data table (or the end of the file).
 
 #include "precomp.hpp"
@@ -46,7 +46,7 @@ public:
         if (!aedat4CompressionSupported(compression_))
             formatError(path, kAedat4MagicSize + 4, format("%s compression is not available in this build",
                                                            aedat4CompressionName(compression_)));
-        const std::vector<Aedat4Stream> streams = aedat4EventStreams(info);
+        const std::vector<Aedat4Stream> streams = aedat4Streams(info, "EVTS");
         if (streams.empty())
             formatError(path, kAedat4MagicSize + 4, "the info node lists no event (EVTS) stream");
         stereo_ = options.cameraFilter < 0 && streams.size() >= 2;
@@ -54,6 +54,11 @@ public:
         if (pick >= (int)streams.size())
             formatError(path, kAedat4MagicSize + 4, format("no event stream for camera %d", pick));
         stream_ = streams[pick].id;
+        // Trigger streams: one per camera when there are as many as event streams, else all for the first.
+        const std::vector<Aedat4Stream> triggers = aedat4Streams(info, "TRIG");
+        for (size_t i = 0; i < triggers.size(); i++)
+            if (options.cameraFilter < 0 || (triggers.size() == streams.size() ? (int)i == pick : pick == 0))
+                triggerStreams_.push_back(triggers[i].id);
         size_ = streams[pick].size;
         if (!options.sensorSize.empty())
             size_ = options.sensorSize;
@@ -84,14 +89,18 @@ public:
             if (size < 0 || (in_.size() >= 0 && size > in_.size() - in_.offset()))
                 formatError(in_.path(), at, format("packet of stream %d claims %d bytes, only %lld left in the file",
                                                    streamId, size, (long long)(in_.size() - in_.offset())));
-            if (streamId != stream_)
+            const bool triggers = std::find(triggerStreams_.begin(), triggerStreams_.end(), streamId) !=
+                                  triggerStreams_.end();
+            if (streamId != stream_ && !triggers)
             {
                 in_.seek(in_.offset() + size);
                 continue;
             }
             packet_.resize((size_t)size);
             in_.readExact(packet_.data(), (size_t)size, "packet payload");
-            if (decode(at, out) > 0)
+            if (triggers)
+                decodeTriggers(at);
+            else if (decode(at, out) > 0)
                 return true;
         }
     }
@@ -139,19 +148,38 @@ private:
         in_.seek(back);
     }
 
+    // The packet's size-prefixed FlatBuffer, decompressed, checked to carry @p identifier; its root table.
+    FlatTable unpack(int64 at, const char* identifier, const char* what)
+    {
+        fb_ = aedat4Decompress(compression_, packet_.data(), packet_.size(), in_.path(), at, kMaxPacketBytes);
+        if (fb_.size() < 12)
+            formatError(in_.path(), at, format("%s shorter than a FlatBuffer header", what));
+        uint32_t prefix;
+        std::memcpy(&prefix, fb_.data(), 4);
+        if (prefix > fb_.size() - 4)
+            formatError(in_.path(), at, format("%s size prefix %u exceeds its %zu bytes", what, prefix, fb_.size() - 4));
+        if (std::memcmp(fb_.data() + 8, identifier, 4) != 0)
+            formatError(in_.path(), at, format("%s does not hold its kind of FlatBuffer (identifier is not %s)", what, identifier));
+        return FlatTable::root(fb_.data() + 4, prefix, in_.path(), at);
+    }
+
+    // TriggerPacket {[Trigger {int64 timestamp; int8 type}]}: DV's external-signal and generator types are
+    // trigger events; its timestamp resets and APS frame / exposure markers are not.
+    void decodeTriggers(int64 at)
+    {
+        for (const FlatTable& trigger : unpack(at, "TRIG", "packet of a trigger stream").tableVectorField(0))
+        {
+            static const int kinds[] = { -1, EVENT_TRIGGER_RISING, EVENT_TRIGGER_FALLING, EVENT_TRIGGER_PULSE,
+                                         EVENT_TRIGGER_GENERATOR_RISING, EVENT_TRIGGER_GENERATOR_FALLING };
+            const int type = trigger.int8Field(1, 0);
+            if (type >= 1 && type <= 5)
+                triggers_.push_back(EventTrigger(trigger.int64Field(0, 0), kinds[type]));
+        }
+    }
+
     size_t decode(int64 at, std::vector<Event>& out)
     {
-        const std::vector<uchar> fb = aedat4Decompress(compression_, packet_.data(), packet_.size(), in_.path(),
-                                                       at, kMaxPacketBytes);
-        if (fb.size() < 12)
-            formatError(in_.path(), at, "event packet shorter than a FlatBuffer header");
-        uint32_t prefix;
-        std::memcpy(&prefix, fb.data(), 4);
-        if (prefix > fb.size() - 4)
-            formatError(in_.path(), at, format("event packet size prefix %u exceeds its %zu bytes", prefix, fb.size() - 4));
-        if (std::memcmp(fb.data() + 8, "EVTS", 4) != 0)
-            formatError(in_.path(), at, "packet of the event stream is not an EventPacket (identifier is not EVTS)");
-        const FlatTable table = FlatTable::root(fb.data() + 4, prefix, in_.path(), at);
+        const FlatTable table = unpack(at, "EVTS", "packet of the event stream");
         size_t count = 0;
         const uchar* e = table.vectorField(0, 16, count);
         for (size_t i = 0; i < count; i++, e += 16)
@@ -173,7 +201,8 @@ private:
     int stream_ = 0;
     bool stereo_ = false;
     int64 duration_ = -1;
-    std::vector<uchar> packet_;
+    std::vector<int> triggerStreams_;
+    std::vector<uchar> packet_, fb_;
 };
 
 }  // namespace

@@ -66,6 +66,7 @@ public:
     Size sensorSize() const CV_OVERRIDE { return size_; }
     bool isStereo() const CV_OVERRIDE { return stereo_; }
     int64 skippedEvents() const CV_OVERRIDE { return decoder_.skipped(); }
+    void takeTriggers(std::vector<EventTrigger>& out) CV_OVERRIDE { decoder_.takeTriggers(out); }
     double progress() const CV_OVERRIDE
     {
         const double inFile = input_ && input_->size() > 0 ? (double)input_->offset() / (double)input_->size() : 0.0;

@@ -6,7 +6,7 @@
 // Header: "% key value" lines, optionally closed by "% end". The sensor size comes from "% format ...;
 // width=W;height=H", "% geometry WxH", or else the plugin name (Gen3 640x480, Gen4.1 / IMX636 1280x720,
 // GenX320 320x320). CD events before the first TIME_HIGH word have no time base: they are skipped and
-// counted (EVENT_CAP_PROP_SKIPPED).
+// counted (EVENT_CAP_PROP_SKIPPED). External trigger words become trigger events.
 
 #include "precomp.hpp"
 #include "io/event_reader.hpp"
@@ -80,7 +80,7 @@ public:
             if (version_ == 2)
                 decodeEvt2(reinterpret_cast<const uint32_t*>(buffer_), got / 4, out);
             else
-                evt3_.decode(reinterpret_cast<const uint16_t*>(buffer_), got / 2, out);
+                evt3_.decode(reinterpret_cast<const uint16_t*>(buffer_), got / 2, out, triggers_);
         }
         return true;
     }
@@ -107,7 +107,11 @@ private:
                 const int64 t = timeHigh_ | ((word >> 22) & 0x3F);
                 out.push_back(Event(t, (int)((word >> 11) & 0x7FF), (int)(word & 0x7FF), (int)type));
             }
-            // 0xA external trigger, 0xD IMU, 0xE others, 0xF continued: not CD events
+            else if (type == 0xA && haveTimeHigh_)  // EXT_TRIGGER: bit 0 the edge, bits 12..8 the channel
+                triggers_.push_back(EventTrigger(timeHigh_ | ((word >> 22) & 0x3F),
+                                                 (word & 1) ? EVENT_TRIGGER_RISING : EVENT_TRIGGER_FALLING,
+                                                 (int)((word >> 8) & 0x1F)));
+            // 0xD IMU, 0xE others, 0xF continued: not CD events
         }
     }
 

@@ -143,6 +143,7 @@ public:
     double progress() const CV_OVERRIDE { return in_.progress(); }
     bool isStereo() const CV_OVERRIDE { return stereo_; }
     int64 skippedEvents() const CV_OVERRIDE { return decoder_.skipped(); }
+    void takeTriggers(std::vector<EventTrigger>& out) CV_OVERRIDE { decoder_.takeTriggers(out); }
 
     bool next(std::vector<Event>& out) CV_OVERRIDE
     {

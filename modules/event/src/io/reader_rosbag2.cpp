@@ -106,6 +106,7 @@ public:
     Size sensorSize() const CV_OVERRIDE { return size_; }
     bool isStereo() const CV_OVERRIDE { return stereo_; }
     int64 skippedEvents() const CV_OVERRIDE { return decoder_.skipped(); }
+    void takeTriggers(std::vector<EventTrigger>& out) CV_OVERRIDE { decoder_.takeTriggers(out); }
     double progress() const CV_OVERRIDE
     {
         return total_ > 0 ? (fileIndex_ + (double)rows_ / (double)total_) / (double)files_.size() : -1.0;

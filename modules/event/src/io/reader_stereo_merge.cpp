@@ -76,6 +76,25 @@ public:
         return true;
     }
 
+    // Both cameras' triggers, stamped with their camera, the right ones on the merged clock, in time order.
+    void takeTriggers(std::vector<EventTrigger>& out) CV_OVERRIDE
+    {
+        const size_t from = out.size();
+        for (int camera = CAMERA_LEFT; camera <= CAMERA_RIGHT; camera++)
+        {
+            const size_t first = out.size();
+            side_[camera].reader->takeTriggers(out);
+            for (size_t i = first; i < out.size(); i++)
+            {
+                out[i].camera = (uchar)camera;
+                if (camera == CAMERA_RIGHT)
+                    out[i].t += offset_;
+            }
+        }
+        std::stable_sort(out.begin() + from, out.end(),
+                         [](const EventTrigger& a, const EventTrigger& b) { return a.t < b.t; });
+    }
+
     // Takes the older head of the two streams. A stream with nothing buffered is asked for more only when the
     // choice needs it: a live stream answers within a poll period, possibly with nothing, and its clock
     // (timeHorizon) may already rule out an event older than the other stream's head, so that a silent camera

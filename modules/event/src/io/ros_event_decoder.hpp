@@ -9,7 +9,7 @@
 // the surrounding message differs: ROS1 is packed little-endian, ROS2 is CDR; each reader extracts the
 // fields and hands the payload here).
 //  - event_camera_msgs/EventPacket, encoding "evt3": Prophesee EVT 3.0 words; the sensor time (us) is
-//    delivered (the decoder state runs across packets, as the words form one stream);
+//    delivered (the decoder state runs across packets, as the words form one stream), external triggers too;
 //  - encoding "libcaer": 8-byte libcaer polarity events {u32 data, int32 t_us}; time = time_base (ns) / 1000
 //    + t, + 2^31 us when t rolls over inside the packet;
 //  - encoding "libcaer_cmp": event_camera_codecs' compact form of it (decodeLibcaerCompressed);
@@ -56,7 +56,7 @@ public:
                 formatError(path, offset, format("evt3 packet of %zu bytes is not a whole number of 16-bit words", n));
             words_.resize(n / 2);
             std::memcpy(words_.data(), data, n);
-            evt3_.decode(words_.data(), words_.size(), out);
+            evt3_.decode(words_.data(), words_.size(), out, triggers_);
         }
         else if (encoding == "libcaer")
         {
@@ -108,6 +108,13 @@ public:
 
     int64 skipped() const { return evt3_.skipped(); }
 
+    /** Moves the trigger events decoded so far (evt3 external triggers) to the end of @p out. */
+    void takeTriggers(std::vector<EventTrigger>& out)
+    {
+        out.insert(out.end(), triggers_.begin(), triggers_.end());
+        triggers_.clear();
+    }
+
 private:
     // libcaer_cmp (event_camera_codecs' compact libcaer): 16-bit words, the code in the top 4 bits. Time is
     // [us] after the packet's time base (ns): a high word sets bits 12-23, a low word bits 0-11, both 0 at the
@@ -150,6 +157,7 @@ private:
     int cmpX_ = 0, cmpBaseY_ = 0, cmpPolarity_ = 0;
     Evt3Decoder evt3_;
     std::vector<uint16_t> words_;
+    std::vector<EventTrigger> triggers_;
 };
 
 /** Bounds-checked little-endian reading of a serialised message. */

@@ -6,6 +6,7 @@
 #define OPENCV_EVENT_EVENT_CAPTURE_HPP
 
 #include "opencv2/event/types.hpp"
+#include "opencv2/event/event_trigger.hpp"
 
 namespace cv {
 namespace event {
@@ -52,6 +53,7 @@ enum EventCaptureProperties
     EVENT_CAP_PROP_DROPPED_TRANSFERS = 18, //!< live: USB transfers that failed (their data is lost); read-only
     EVENT_CAP_PROP_INVALID_ADDRESSES = 19, //!< live: event words with an address beyond the pixel array (skipped); read-only
     EVENT_CAP_PROP_QUEUE_CAPACITY = 20,    //!< live, before open: USB transfers buffered between the camera's reader thread and read() (default 512, about 0.5 s at full rate)
+    EVENT_CAP_PROP_TRIGGERS = 21,          //!< trigger events decoded so far (all of the recording's once read() has returned false); read-only
     EVENT_CAP_PROP_TEXT_TIME_UNIT = 100,   //!< text, before open: EventTimeUnit of the t column (default EVENT_TIME_UNIT_AUTO)
     EVENT_CAP_PROP_TEXT_ONE_BASED = 101,   //!< text, before open: 1 when x and y start at 1 (TUM stereo recordings)
     EVENT_CAP_PROP_TEXT_COLUMN_T = 102,    //!< text, before open: 0-based column of t (default 0)
@@ -73,7 +75,8 @@ enum EventCaptureProperties
     EVENT_CAP_PROP_DEVICE_IS_MASTER = 210,        //!< live, read-only: 1 when the camera drives the timestamp clock (no sync input)
     EVENT_CAP_PROP_DEVICE_LOGIC_VERSION = 211,    //!< live, read-only: FPGA logic version
     EVENT_CAP_PROP_DEVICE_FIRMWARE_VERSION = 212, //!< live, read-only: USB firmware version
-    EVENT_CAP_PROP_DEVICE_CHIP_ID = 213           //!< live, read-only: chip identifier (0..2 DAVIS240A/B/C, 4/5/9 DAVIS346A/B/C, ...)
+    EVENT_CAP_PROP_DEVICE_CHIP_ID = 213,          //!< live, read-only: chip identifier (0..2 DAVIS240A/B/C, 4/5/9 DAVIS346A/B/C, ...)
+    EVENT_CAP_PROP_DEVICE_EXTERNAL_INPUT = 214    //!< live: 1 = the rising and falling edges on the camera's external (trigger) input become trigger events, see EventCapture::retrieveTriggers() (default 0)
 };
 
 /** @brief What EventCapture does with an event older than the one before it (a sensor reset, a bad file). */
@@ -160,6 +163,19 @@ public:
 
     /** @brief The packet of the last grab(): N x 1 EVENT_MAT_TYPE (or a std::vector<Event>). */
     CV_WRAP virtual bool retrieve(OutputArray events);
+
+    /** @brief The trigger events of the last grab()'s packet: N x 1 EVENT_TRIGGER_MAT_TYPE (or a
+    `std::vector<EventTrigger>`), in time order, empty when there were none; may be called before or after
+    retrieve(). A packet takes the triggers stamped before its end (a time window's end; for a batch, up to
+    its last event's time); the first packet also takes those before it, the last one those after it.
+    Triggers are read where the format stores them: Prophesee EVT 2.0 / 3.0 external triggers (also inside
+    ROS bags of evt3 packets), AEDAT 4.0 trigger streams, AEDAT 3.1 special events, AEDAT 1.0 / 2.0 external
+    events (as pulses), live DAVIS cameras' external-input events (once EVENT_CAP_PROP_DEVICE_EXTERNAL_INPUT
+    is 1); other formats have none. APS frame and exposure markers and timestamp resets are not
+    triggers. A stereo source stamps each with its camera (EventTrigger::camera) and shifts the right camera's
+    by EVENT_CAP_PROP_RIGHT_TIME_OFFSET_US.
+    @return false when no packet was grabbed. */
+    CV_WRAP virtual bool retrieveTriggers(OutputArray triggers);
 
     /** @brief grab() + retrieve(). @return false, with an empty packet, at the end of the stream. */
     CV_WRAP virtual bool read(OutputArray events);
