@@ -92,6 +92,11 @@ public:
             matcher->renderDisparity(t, image, camera, colourBar);
     }
 
+    cv::Vec2i getDisparityDisplayRange(double t, int camera) const
+    {
+        return frames ? frames->getDisparityDisplayRange(t, camera) : matcher->getDisparityDisplayRange(t, camera);
+    }
+
     cv::Ptr<cv::event::StereoEventMatcher> matcher;  // one of the two is set
     cv::Ptr<cv::event::FrameStereoMatcher> frames;
 };

@@ -238,7 +238,7 @@ int main(int argc, char** argv)
                 }
             }
 
-            const Mat picture = sampleEnlarge(stereoWindowPicture(method, windowEnd - 1, truthDisparity, opt.minDisparity, opt.maxDisparity), zoom);
+            const Mat picture = sampleEnlarge(stereoWindowPicture(method, windowEnd - 1, truthDisparity), zoom);
             if (opt.allFrames || sampleIsPictureWindow(windows, source.progress(), lastEighth))
             {
                 imwrite(opt.output + cv::format("/disparity_%05lld.png", (long long)windows), picture);

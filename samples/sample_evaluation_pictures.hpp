@@ -83,10 +83,12 @@ inline Mat drawFilterBeforeAfter(const std::vector<Event>& window, const std::ve
     return pair;
 }
 
-inline Mat colourDisparity(const Mat& d, float maxDisparity)
+// JET over [range[0], range[1]] px (black where d <= 0, no disparity).
+inline Mat colourDisparity(const Mat& d, Vec2i range)
 {
     Mat scaled, colour;
-    d.convertTo(scaled, CV_8U, 255.0 / maxDisparity);
+    const double span = std::max(1, range[1] - range[0]);
+    d.convertTo(scaled, CV_8U, 255.0 / span, -255.0 * range[0] / span);
     applyColorMap(scaled, colour, COLORMAP_JET);
     colour.setTo(Scalar::all(0), d <= 0);
     return colour;

@@ -170,9 +170,13 @@ inline void writeEvaluationReport(const EvaluationReport& r, const EvaluationTot
     }
     if (disparities)
     {
-        const float maxDisparity = 48;
+        // Both on the scale of the disparities the truth holds (0 there: none).
+        Mat truth;
+        acc.lastTruth.convertTo(truth, CV_32F);
+        truth.setTo(-1, truth <= 0);
+        const Vec2i range = disparityDisplayRange(truth, 0, 255);
         Mat pair;
-        hconcat(colourDisparity(acc.lastEstimate, maxDisparity), colourDisparity(acc.lastTruth, maxDisparity), pair);
+        hconcat(colourDisparity(acc.lastEstimate, range), colourDisparity(acc.lastTruth, range), pair);
         resize(pair, pair, Size(), 2, 2, INTER_NEAREST);
         imwrite(r.output + "/disparity_vs_truth.png", pair);
     }

@@ -28,9 +28,8 @@ inline bool sampleIsPictureWindow(int64_t window, double fraction, int& lastEigh
 }
 
 // Left | right active events coloured by disparity; below, when simulated, the true disparity of the window's
-// left events.
-inline cv::Mat stereoWindowPicture(const StereoMethod& method, double t,
-                                   const cv::Mat& truthDisparity, int minDisparity, int maxDisparity)
+// left events on the left picture's colour scale.
+inline cv::Mat stereoWindowPicture(const StereoMethod& method, double t, const cv::Mat& truthDisparity)
 {
     cv::Mat left, right, row;
     method.renderDisparity(t, left, cv::event::CAMERA_LEFT, false);
@@ -39,7 +38,9 @@ inline cv::Mat stereoWindowPicture(const StereoMethod& method, double t,
     if (truthDisparity.empty())
         return row;
     const cv::Size size = truthDisparity.size();
-    const double range = std::max(1, maxDisparity - minDisparity);
+    const cv::Vec2i scale = method.getDisparityDisplayRange(t, cv::event::CAMERA_LEFT);
+    const int minDisparity = scale[0];
+    const double range = std::max(1, scale[1] - scale[0]);
     cv::Mat scaled, colour, below = cv::Mat::zeros(size.height, row.cols, CV_8UC3);
     truthDisparity.convertTo(scaled, CV_8U, 255.0 / range, -255.0 * minDisparity / range);
     cv::applyColorMap(scaled, colour, cv::COLORMAP_JET);

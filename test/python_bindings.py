@@ -167,6 +167,9 @@ assert picture.shape[0] == 24 and picture.shape[2] == 3
 active = matcher.getActiveDisparity(float(events[-1][0]))
 assert active.shape == (24, picture.shape[1] - 56) and active.dtype == np.float32
 assert (active >= 0).any() and np.array_equal(active < 0, np.all(picture[:, :active.shape[1]] == 0, axis=2))
+# The colour scale: the disparities present (the edge at 12 px), not the whole 0-40 px search.
+low, high = matcher.getDisparityDisplayRange(float(events[-1][0]))
+assert low <= 12 <= high and 2 <= high - low <= 8, (low, high)
 # Noise filters: an isolated event goes, a column of neighbours stays (background activity).
 ba = ev.BackgroundActivityFilter_create((16, 8), 2000.0)
 column = ev.packEvents(np.array([1000.0, 1000, 1000, 50000]), np.array([3, 3, 3, 12], np.int32),

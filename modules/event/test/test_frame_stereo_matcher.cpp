@@ -49,6 +49,13 @@ TEST(FrameStereoMatcher, shows_each_estimate_for_one_frame_window)
                                                                : (float)StereoEventMatcher::NO_DISPARITY;
     EXPECT_EQ(cvtest::norm(shown, expected, NORM_INF), 0.0);
     EXPECT_GT(countNonZero(shown >= 0), 100);
+    // The colour scale spans the disparities present: two_planes' planes at 10 and 20 px, not the whole
+    // 0-64 px search.
+    const Vec2i range = m->getDisparityDisplayRange((double)last, CAMERA_LEFT);
+    EXPECT_GE(range[0], 8);
+    EXPECT_LE(range[0], 10);
+    EXPECT_GE(range[1], 20);
+    EXPECT_LE(range[1], 22);
     Mat picture;
     m->renderDisparity((double)last, picture, CAMERA_LEFT, false);
     Mat lit;

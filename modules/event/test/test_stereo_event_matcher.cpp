@@ -575,14 +575,69 @@ TEST(StereoEventMatcher, renderDisparity_colours_active_events_and_leaves_the_re
     EXPECT_EQ(img.type(), CV_8UC3);
     EXPECT_GT(img.cols, size.width);
     EXPECT_EQ(plain.size(), size);
-    // The last matched pixel has JET's colour for its disparity; long-expired pixels (10 ms) are black.
-    Mat ramp(1, 1, CV_8U, Scalar(cvRound(lastDisparity / 40.0 * 255))), colour;
+    // The last matched pixel has JET's colour for its disparity on the display range; long-expired pixels
+    // (10 ms) are black.
+    const Vec2i range = m->getDisparityDisplayRange(t, CAMERA_LEFT);
+    Mat ramp(1, 1, CV_8U, Scalar(cvRound((lastDisparity - range[0]) / (double)(range[1] - range[0]) * 255))), colour;
     applyColorMap(ramp, colour, COLORMAP_JET);
     EXPECT_EQ(plain.at<Vec3b>(lastMatched), colour.at<Vec3b>(0));
     EXPECT_EQ(plain.at<Vec3b>(12, 0), Vec3b(0, 0, 0));
     Mat later;
     m->renderDisparity(t + 20000, later, CAMERA_LEFT, false);
     EXPECT_EQ(countNonZero(later.reshape(1)), 0);
+}
+
+TEST(StereoEventMatcher, the_colour_scale_spans_the_disparities_present)
+{
+    // A 0-40 px search: with nothing shown the scale is the whole search; an edge at 12 px, its events shown
+    // at 12.0-12.8 px, narrows it to the pixel they lie in widened to 2 px, [11, 13], in both cameras; once
+    // their activity has ended nothing is shown, and the scale is the whole search again.
+    const Size size(64, 24);
+    Ptr<StereoEventMatcher> m = StereoEventMatcher::create(size, STEREO_FIXED_INTERVAL);
+    m->setAveragingRadius(0);
+    EXPECT_EQ(Vec2i(0, 40), m->getDisparityDisplayRange(0, CAMERA_LEFT));
+    const std::vector<Event> ev = edgePair(size, 12, 500, 300);
+    Mat disparity;
+    m->process(ev, disparity);
+    const double t = (double)ev.back().t;
+    for (int camera : { CAMERA_LEFT, CAMERA_RIGHT })
+    {
+        Mat shown;
+        m->getActiveDisparity(t, shown, camera);
+        ASSERT_GT(countNonZero(shown >= 0), 0);
+        ASSERT_EQ(countNonZero(shown >= 0), countNonZero(shown >= 12.f & shown < 13.f)) << "camera " << camera;
+        EXPECT_EQ(Vec2i(11, 13), m->getDisparityDisplayRange(t, camera)) << "camera " << camera;
+    }
+    EXPECT_EQ(Vec2i(0, 40), m->getDisparityDisplayRange(t + 1e6, CAMERA_LEFT));
+    EXPECT_THROW(m->getDisparityDisplayRange(t, 2), cv::Exception);
+    // At the end of the search the scale stays inside it: disparities 12..13.
+    m->setMinDisparity(12);
+    m->setMaxDisparity(13);
+    m->process(ev, disparity);
+    EXPECT_EQ(Vec2i(12, 13), m->getDisparityDisplayRange(t, CAMERA_LEFT));
+}
+
+TEST(StereoEventMatcher, disparityDisplayRange_takes_the_2nd_to_98th_percentile_in_whole_pixels)
+{
+    // 96 disparities spread over 9..20.9 px, one stray low (2 px) and one high (39 px) among 98: the scale is
+    // [9, 21], not the 0-40 px search; no disparity (negative) counts.
+    Mat_<float> map(10, 10, -1.f);
+    for (int i = 0; i < 96; i++)
+        map(i / 10, i % 10) = 9.f + (float)(i % 12) + 0.5f;
+    map(9, 6) = 2.f;
+    map(9, 7) = 39.f;
+    EXPECT_EQ(Vec2i(9, 21), disparityDisplayRange(map, 0, 40));
+    // One value: at least 2 px, widened downwards first, inside the search range.
+    Mat_<float> one(1, 1, 12.5f);
+    EXPECT_EQ(Vec2i(11, 13), disparityDisplayRange(one, 0, 40));
+    one(0, 0) = 0.3f;
+    EXPECT_EQ(Vec2i(0, 2), disparityDisplayRange(one, 0, 40));
+    EXPECT_EQ(Vec2i(12, 13), disparityDisplayRange(Mat_<float>(1, 1, 12.5f), 12, 13));
+    // Nothing to show: the whole search.
+    EXPECT_EQ(Vec2i(0, 40), disparityDisplayRange(Mat_<float>(4, 4, -1.f), 0, 40));
+    EXPECT_EQ(Vec2i(0, 40), disparityDisplayRange(noArray(), 0, 40));
+    EXPECT_THROW(disparityDisplayRange(Mat_<uchar>(2, 2, (uchar)5), 0, 40), cv::Exception);
+    EXPECT_THROW(disparityDisplayRange(map, 10, 10), cv::Exception);
 }
 
 TEST(StereoEventMatcher, getActiveDisparity_holds_the_estimates_renderDisparity_shows)

@@ -47,9 +47,9 @@ void activeDisparityMap(const ActiveEstimateMap (&sensors)[2], Size size, double
         }
 }
 
-void renderDisparityMap(const Mat_<float>& disparity, int minDisparity, int maxDisparity, bool colourBar,
-                        OutputArray image)
+void renderDisparityMap(const Mat_<float>& disparity, Vec2i range, bool colourBar, OutputArray image)
 {
+    const int minDisparity = range[0], maxDisparity = range[1];
     const int width = disparity.cols, height = disparity.rows;
     const int barWidth = colourBar ? 56 : 0;
     image.create(height, width + barWidth, CV_8UC3);
@@ -79,5 +79,49 @@ void renderDisparityMap(const Mat_<float>& disparity, int minDisparity, int maxD
 }
 
 }  // namespace detail
+
+Vec2i disparityDisplayRange(InputArray disparity, int minDisparity, int maxDisparity)
+{
+    if (maxDisparity <= minDisparity)
+        CV_Error_(Error::StsBadArg, ("disparityDisplayRange: the range [%d, %d] is empty", minDisparity, maxDisparity));
+    if (disparity.empty())
+        return Vec2i(minDisparity, maxDisparity);
+    if (disparity.type() != CV_32F)
+        CV_Error_(Error::StsUnsupportedFormat, ("disparityDisplayRange: the map is of type %s; CV_32F expected",
+                                                typeToString(disparity.type()).c_str()));
+    // A histogram of whole pixels (the ends take what lies beyond), then the bins holding the 2nd and the 98th
+    // percentile: [lo, hi + 1) in pixels.
+    std::vector<int64> counts((size_t)(maxDisparity - minDisparity + 1), 0);
+    int64 total = 0;
+    const Mat map = disparity.getMat();
+    for (int y = 0; y < map.rows; y++)
+    {
+        const float* row = map.ptr<float>(y);
+        for (int x = 0; x < map.cols; x++)
+            if (row[x] >= 0)
+            {
+                counts[(size_t)std::max(0, std::min((int)counts.size() - 1, (int)std::floor(row[x]) - minDisparity))]++;
+                total++;
+            }
+    }
+    if (total == 0)
+        return Vec2i(minDisparity, maxDisparity);
+    int lo = 0, hi = (int)counts.size() - 1;
+    int64 below = 0, above = 0;
+    while (lo < hi && (below + counts[(size_t)lo]) * 50 <= total)
+        below += counts[(size_t)lo++];
+    while (hi > lo && (above + counts[(size_t)hi]) * 50 <= total)
+        above += counts[(size_t)hi--];
+    int low = minDisparity + lo, high = std::min(maxDisparity, minDisparity + hi + 1);
+    while (high - low < 2 && (low > minDisparity || high < maxDisparity))
+    {
+        if (low > minDisparity)
+            low--;
+        if (high - low < 2 && high < maxDisparity)
+            high++;
+    }
+    return Vec2i(low, high);
+}
+
 }  // namespace event
 }  // namespace cv

@@ -54,7 +54,15 @@ public:
     {
         Mat_<float> disparity;
         activeDisparityMap(estimates_, params_.sensorSize, t, camera, "FrameStereoMatcher::renderDisparity", disparity);
-        renderDisparityMap(disparity, params_.minDisparity, params_.maxDisparity, colourBar, image);
+        renderDisparityMap(disparity, disparityDisplayRange(disparity, params_.minDisparity, params_.maxDisparity),
+                           colourBar, image);
+    }
+    Vec2i getDisparityDisplayRange(double t, int camera) const CV_OVERRIDE
+    {
+        Mat_<float> disparity;
+        activeDisparityMap(estimates_, params_.sensorSize, t, camera, "FrameStereoMatcher::getDisparityDisplayRange",
+                           disparity);
+        return disparityDisplayRange(disparity, params_.minDisparity, params_.maxDisparity);
     }
     void getActiveDisparity(double t, OutputArray disparity, int camera) const CV_OVERRIDE
     {

@@ -147,7 +147,16 @@ void StereoEventMatcherImpl::renderDisparity(double t, OutputArray image, int ca
     Mat_<float> disparity;
     activeDisparityMap(estimates_, params_.sensorSize, t, camera,
                        "StereoEventMatcher::renderDisparity", disparity);
-    renderDisparityMap(disparity, params_.minDisparity, params_.maxDisparity, colourBar, image);
+    renderDisparityMap(disparity, disparityDisplayRange(disparity, params_.minDisparity, params_.maxDisparity),
+                       colourBar, image);
+}
+
+Vec2i StereoEventMatcherImpl::getDisparityDisplayRange(double t, int camera) const
+{
+    Mat_<float> disparity;
+    activeDisparityMap(estimates_, params_.sensorSize, t, camera, "StereoEventMatcher::getDisparityDisplayRange",
+                       disparity);
+    return disparityDisplayRange(disparity, params_.minDisparity, params_.maxDisparity);
 }
 
 }  // namespace detail

@@ -78,6 +78,7 @@ public:
     void processEvent(const Event& e, StereoEventEstimate& est) CV_OVERRIDE;
     void renderDisparity(double t, OutputArray image, int camera, bool colourBar) const CV_OVERRIDE;
     void getActiveDisparity(double t, OutputArray disparity, int camera) const CV_OVERRIDE;
+    Vec2i getDisparityDisplayRange(double t, int camera) const CV_OVERRIDE;
 
     void reset() CV_OVERRIDE;
     void setCalibration(const StereoCalibration& calibration) CV_OVERRIDE;

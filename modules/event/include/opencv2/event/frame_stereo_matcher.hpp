@@ -56,6 +56,8 @@ public:
     /** @brief The disparities renderDisparity() shows, as numbers (CV_32F, the sensor's size, NO_DISPARITY
     where none), as StereoEventMatcher::getActiveDisparity() gives them. */
     CV_WRAP virtual void getActiveDisparity(double t, OutputArray disparity, int camera = CAMERA_LEFT) const = 0;
+    /** @brief The colour scale of renderDisparity(), as StereoEventMatcher::getDisparityDisplayRange() gives it. */
+    CV_WRAP virtual Vec2i getDisparityDisplayRange(double t, int camera = CAMERA_LEFT) const = 0;
 
     /** @brief Forgets all events and the current window's frames (keeps parameters and calibration). */
     CV_WRAP virtual void reset() = 0;

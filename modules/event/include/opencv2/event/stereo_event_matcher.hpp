@@ -106,10 +106,15 @@ public:
     virtual void processEvent(const Event& event, StereoEventEstimate& estimate) = 0;
 
     /** @brief Colour-coded disparity of the events of @p camera active at time @p t [us] (the paper's
-    Figure 1): JET from min (blue) to max disparity (red), black where there is none, and a labelled colour
-    bar on the right when @p colourBar is set. CV_8UC3, sensor height x (sensor width + bar). */
+    Figure 1): JET over getDisparityDisplayRange(t, camera) (blue to red), black where there is none, and a
+    labelled colour bar on the right when @p colourBar is set. CV_8UC3, sensor height x (sensor width + bar). */
     CV_WRAP virtual void renderDisparity(double t, OutputArray image, int camera = CAMERA_LEFT,
                                          bool colourBar = true) const = 0;
+
+    /** @brief The colour scale of renderDisparity() at time @p t [us] for @p camera: the disparities shown
+    (getActiveDisparity()) as disparityDisplayRange() scales them, [low, high] in whole pixels. A person at
+    9-20 px on a 0-40 px search spans the scale instead of showing in one colour. */
+    CV_WRAP virtual Vec2i getDisparityDisplayRange(double t, int camera = CAMERA_LEFT) const = 0;
 
     /** @brief The disparities renderDisparity() shows, as numbers: per rectified pixel of @p camera, the own
     estimate of its last event when that estimate is active at time @p t [us], NO_DISPARITY elsewhere. CV_32F,
@@ -275,6 +280,12 @@ public:
 CV_EXPORTS_W String getStereoModeName(int mode);
 /** @brief The StereoMatchMode named (as getStereoModeName writes it, case-insensitive); -1 when unknown. */
 CV_EXPORTS_W int findStereoMode(const String& name);
+
+/** @brief The colour scale renderDisparity() gives a disparity map (@p disparity: CV_32F, negative values
+none), for a map of your own (ground truth, another method's): [low, high] in whole pixels from the 2nd to the
+98th percentile of its disparities, widened to at least 2 px within [@p minDisparity, @p maxDisparity], all of
+that range when the map holds no disparity. */
+CV_EXPORTS_W Vec2i disparityDisplayRange(InputArray disparity, int minDisparity, int maxDisparity);
 
 //! @}
 
