@@ -13,6 +13,7 @@
 #include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -49,6 +50,33 @@ inline std::vector<cv::event::EventTrigger> readAllTriggers(cv::event::EventCapt
         all.insert(all.end(), triggers.begin(), triggers.end());
     }
     return all;
+}
+
+/** What event_camera_py's tests check of a bag: the sum of every event's and trigger's time [us], and the
+triggers by (kind, channel). @p cap is read in the packets its properties give. */
+struct EventAndTriggerTally
+{
+    int64 timeSum = 0;
+    std::map<std::pair<int, int>, int64> triggers;  // (EventTriggerKind, channel) -> count
+};
+
+inline EventAndTriggerTally tallyEventsAndTriggers(cv::event::EventCapture& cap)
+{
+    EventAndTriggerTally tally;
+    std::vector<cv::event::Event> packet;
+    std::vector<cv::event::EventTrigger> triggers;
+    while (cap.read(packet))
+    {
+        cap.retrieveTriggers(triggers);
+        for (const cv::event::Event& e : packet)
+            tally.timeSum += e.t;
+        for (const cv::event::EventTrigger& t : triggers)
+        {
+            tally.timeSum += t.t;
+            tally.triggers[std::make_pair((int)t.kind, (int)t.channel)]++;
+        }
+    }
+    return tally;
 }
 
 /** Writes @p content to a fresh temporary file with the given suffix and returns its path. */

@@ -278,26 +278,11 @@ TEST(Event_Capture_Real, rosbag1_evt3_triggers)
     {
         EventCapture cap(requireSharedData(file));
         cap.set(EVENT_CAP_PROP_WINDOW_US, 10000);
-        std::vector<Event> packet;
-        std::vector<EventTrigger> triggers;
-        int64 timeSum = 0, falling = 0, rising = 0, others = 0;
-        while (cap.read(packet))
-        {
-            cap.retrieveTriggers(triggers);
-            for (const Event& e : packet)
-                timeSum += e.t;
-            for (const EventTrigger& t : triggers)
-            {
-                timeSum += t.t;
-                falling += t.kind == EVENT_TRIGGER_FALLING && t.channel == 6;
-                rising += t.kind == EVENT_TRIGGER_RISING && t.channel == 6;
-                others += t.channel != 6;
-            }
-        }
-        EXPECT_EQ(2885601049874LL, timeSum) << file;
-        EXPECT_EQ(2078, falling) << file;
-        EXPECT_EQ(2079, rising) << file;
-        EXPECT_EQ(0, others) << file;
+        const EventAndTriggerTally tally = tallyEventsAndTriggers(cap);
+        EXPECT_EQ(2885601049874LL, tally.timeSum) << file;
+        const std::map<std::pair<int, int>, int64> expected = { { { EVENT_TRIGGER_FALLING, 6 }, 2078 },
+                                                                { { EVENT_TRIGGER_RISING, 6 }, 2079 } };
+        EXPECT_EQ(expected, tally.triggers) << file;
         EXPECT_EQ(4157.0, cap.get(EVENT_CAP_PROP_TRIGGERS)) << file;
     }
 }

@@ -136,24 +136,11 @@ TEST(Event_Capture_Real, rosbag2_legacy_event_array_triggers)
 {
     EventCapture cap(requireSharedData("format_samples/ecpy_legacy_eventarray_ros2"));
     cap.set(EVENT_CAP_PROP_BATCH_EVENTS, 30000);
-    std::vector<Event> packet;
-    std::vector<EventTrigger> triggers;
-    int64 timeSum = 0, kinds[2] = { 0, 0 };
-    while (cap.read(packet))
-    {
-        cap.retrieveTriggers(triggers);
-        for (const Event& e : packet)
-            timeSum += e.t;
-        for (const EventTrigger& t : triggers)
-        {
-            timeSum += t.t;
-            ASSERT_LE((int)t.kind, (int)EVENT_TRIGGER_RISING);
-            kinds[t.kind]++;
-        }
-    }
-    EXPECT_EQ(6024891770230LL, timeSum);
-    EXPECT_EQ(18, kinds[EVENT_TRIGGER_RISING]);
-    EXPECT_EQ(18, kinds[EVENT_TRIGGER_FALLING]);
+    const EventAndTriggerTally tally = tallyEventsAndTriggers(cap);
+    EXPECT_EQ(6024891770230LL, tally.timeSum);
+    const std::map<std::pair<int, int>, int64> expected = { { { EVENT_TRIGGER_FALLING, 6 }, 18 },
+                                                            { { EVENT_TRIGGER_RISING, 6 }, 18 } };
+    EXPECT_EQ(expected, tally.triggers);
 }
 
 }} // namespace
