@@ -633,8 +633,10 @@ TEST(StereoEventMatcher, disparityDisplayRange_takes_the_2nd_to_98th_percentile_
     one(0, 0) = 0.3f;
     EXPECT_EQ(Vec2i(0, 2), disparityDisplayRange(one, 0, 40));
     EXPECT_EQ(Vec2i(12, 13), disparityDisplayRange(Mat_<float>(1, 1, 12.5f), 12, 13));
-    // Nothing to show: the whole search.
+    // Nothing to show: the whole search (NaN is no disparity either); infinity counts at the search's end.
     EXPECT_EQ(Vec2i(0, 40), disparityDisplayRange(Mat_<float>(4, 4, -1.f), 0, 40));
+    EXPECT_EQ(Vec2i(0, 40), disparityDisplayRange(Mat_<float>(1, 1, std::numeric_limits<float>::quiet_NaN()), 0, 40));
+    EXPECT_EQ(Vec2i(38, 40), disparityDisplayRange(Mat_<float>(1, 1, std::numeric_limits<float>::infinity()), 0, 40));
     EXPECT_EQ(Vec2i(0, 40), disparityDisplayRange(noArray(), 0, 40));
     EXPECT_THROW(disparityDisplayRange(Mat_<uchar>(2, 2, (uchar)5), 0, 40), cv::Exception);
     EXPECT_THROW(disparityDisplayRange(map, 10, 10), cv::Exception);

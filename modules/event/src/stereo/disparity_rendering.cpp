@@ -98,9 +98,10 @@ Vec2i disparityDisplayRange(InputArray disparity, int minDisparity, int maxDispa
     {
         const float* row = map.ptr<float>(y);
         for (int x = 0; x < map.cols; x++)
-            if (row[x] >= 0)
+            if (row[x] >= 0)  // (NaN: none)
             {
-                counts[(size_t)std::max(0, std::min((int)counts.size() - 1, (int)std::floor(row[x]) - minDisparity))]++;
+                const double d = std::min((double)row[x], (double)maxDisparity);  // +inf too: the last bin
+                counts[(size_t)std::max(0, (int)std::floor(d) - minDisparity)]++;
                 total++;
             }
     }
