@@ -4,9 +4,10 @@
 //   event_info --stats --scene=NAME[,NAME...] [--duration-ms=MS]   (the simulator's scenes)
 //   event_info --devices      (the event cameras connected: what EventCapture::open("davis:...") takes)
 //
-// Per file: detected format, sensor size, event count (ON / OFF, and left / right for stereo files), first
-// and last timestamp, duration, and the events the reader rejected (outside the sensor), found going back in
-// time, or could not place in time. Exit status 1 when any file could not be read (the error names it).
+// Per file: detected format, sensor size, event count (ON / OFF, and left / right for stereo files), trigger
+// events by kind, first and last timestamp, duration, and the events the reader rejected (outside the sensor),
+// found going back in time, or could not place in time. Exit status 1 when any file could not be read (the
+// error names it).
 // --stats adds, per camera, what the stream looks like (EventStatistics: event rate, ON share, events per
 // pixel per edge crossing, intervals at a pixel, isolated events, pixels active in 10 ms) and ends with one
 // Markdown table of every file and scene side by side: how a simulated scene compares with real recordings
@@ -217,7 +218,8 @@ int main(int argc, char** argv)
     try
     {
         ProgramCommandLine cmd(argc, argv, keys,
-                              "What is in an event recording: format, sensor, events, time span, rejected events.",
+                              "What is in an event recording: format, sensor, events, trigger events, time span, "
+                              "rejected events.",
                               true);
         if (cmd.helpShown())
             return 0;
