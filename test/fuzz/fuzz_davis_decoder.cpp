@@ -19,12 +19,18 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
     cv::event::detail::DavisEventDecoder decoder(columns, rows, invertXY, waitForReset);
     const int width = invertXY ? rows : columns, height = invertXY ? columns : rows;
     std::vector<cv::event::Event> events;
+    std::vector<cv::event::EventTrigger> triggers;
     for (size_t pos = 2; pos < size; pos += transfer)
     {
         events.clear();
         decoder.decode(data + pos, std::min(transfer, size - pos), events);
         for (const cv::event::Event& e : events)
             if (e.x < 0 || e.y < 0 || e.x >= width || e.y >= height || e.t < 0)
+                std::abort();
+        triggers.clear();
+        decoder.takeTriggers(triggers);  // on the events' clock: never before zero, a known kind
+        for (const cv::event::EventTrigger& t : triggers)
+            if (t.t < 0 || t.kind > cv::event::EVENT_TRIGGER_GENERATOR_RISING)
                 std::abort();
     }
     return 0;

@@ -42,8 +42,10 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
         cap.open(path, cv::event::FUZZ_API);
         const cv::Size sensor = cap.getSensorSize();
         std::vector<cv::event::Event> events;
-        int64_t last = INT64_MIN;
+        std::vector<cv::event::EventTrigger> triggers;
+        int64_t last = INT64_MIN, lastTrigger = INT64_MIN, triggerCount = 0;
         while (cap.read(events))
+        {
             for (const cv::event::Event& e : events)
             {
                 if (!sensor.empty() && (e.x < 0 || e.y < 0 || e.x >= sensor.width || e.y >= sensor.height))
@@ -52,6 +54,17 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
                     std::abort();
                 last = e.t;
             }
+            cap.retrieveTriggers(triggers);  // in time order, each a known kind, each delivered once
+            for (const cv::event::EventTrigger& t : triggers)
+            {
+                if (t.t < lastTrigger || t.kind > cv::event::EVENT_TRIGGER_GENERATOR_RISING)
+                    std::abort();
+                lastTrigger = t.t;
+            }
+            triggerCount += (int64_t)triggers.size();
+            if (triggerCount > (int64_t)cap.get(cv::event::EVENT_CAP_PROP_TRIGGERS))
+                std::abort();
+        }
     }
     catch (const cv::Exception&)
     {

@@ -35,17 +35,23 @@ write("text", "stereo_camera_column.txt", "".join("%d %d %d %d %d\n" % (e + (rng
 
 # AEDAT 2.0: '#' header, big-endian (address, timestamp); DAVIS240 address = y << 22 | x << 12 | p << 11
 hdr = b"#!AER-DAT2.0\r\n# AEChip: eu.seebetter.ini.chips.davis.DAVIS240C\r\n"
-write("aedat2", "davis240.aedat", hdr + b"".join(struct.pack(">II", (y << 22) | (x << 12) | (p << 11), t) for t, x, y, p in events(20, 240, 180)))
+ev = list(events(20, 240, 180))  # then an external event (address bit 10): a trigger
+write("aedat2", "davis240.aedat", hdr + b"".join(struct.pack(">II", (y << 22) | (x << 12) | (p << 11), t) for t, x, y, p in ev)
+      + struct.pack(">II", 1 << 10, ev[-1][0] + 1))
 hdr = b"#!AER-DAT2.0\r\n# AEChip: ch.unizh.ini.jaer.chip.retina.DVS128\r\n"
-write("aedat2", "dvs128.aedat", hdr + b"".join(struct.pack(">II", (y << 8) | (x << 1) | p, t) for t, x, y, p in events(20, 128, 128)))
+ev = list(events(20, 128, 128))  # then a sync event (bit 15): a trigger
+write("aedat2", "dvs128.aedat", hdr + b"".join(struct.pack(">II", (y << 8) | (x << 1) | p, t) for t, x, y, p in ev)
+      + struct.pack(">II", 1 << 15, ev[-1][0] + 1))
 
 # AEDAT 3.1: text header, then packets: 28-byte header (type, source, size, ts offset, overflow, capacity,
-# number, valid) and 8-byte polarity events (x << 17 | y << 2 | p << 1 | valid, timestamp)
+# number, valid) and 8-byte polarity events (x << 17 | y << 2 | p << 1 | valid, timestamp); a special-event packet
+# (type 0: type << 1 | valid, timestamp) with a rising and a falling edge of external input 0
 hdr = b"#!AER-DAT3.1\r\n#Format: RAW\r\n#Source 1: DAVIS346B\r\n#!END-HEADER\r\n"
 ev = list(events(10, 346, 260))
 packet = struct.pack("<HHIIIIII", 1, 1, 8, 4, 0, len(ev), len(ev), len(ev))
 packet += b"".join(struct.pack("<Ii", (x << 17) | (y << 2) | (p << 1) | 1, t) for t, x, y, p in ev)
-write("aedat3", "davis346.aedat", hdr + packet + struct.pack("<HHIIIIII", 2, 1, 16, 12, 0, 1, 1, 1) + b"\x00" * 16)
+special = struct.pack("<HHIIIIII", 0, 1, 8, 4, 0, 2, 2, 2) + struct.pack("<IiIi", 2 << 1 | 1, 10, 3 << 1 | 1, 20)
+write("aedat3", "davis346.aedat", hdr + packet + special + struct.pack("<HHIIIIII", 2, 1, 16, 12, 0, 1, 1, 1) + b"\x00" * 16)
 
 # Prophesee DAT: '% ' header, type and size bytes, 8-byte (t, y << 14 | x | p << 28) records
 hdr = b"% Data file containing CD events\n% Version 2\n% Width 304\n% Height 240\n"
@@ -57,6 +63,7 @@ words = [0x8 << 28 | 0]
 for t, x, y, p in events(20, 640, 480):
     words.append(0x8 << 28 | (t >> 6))
     words.append(p << 28 | (t & 63) << 22 | x << 11 | y)
+words.append(0xA << 28 | (t & 63) << 22 | 1 << 8 | 1)  # EXT_TRIGGER: channel 1, rising
 write("raw", "evt2.raw", hdr + b"".join(struct.pack("<I", w) for w in words))
 
 # Prophesee RAW EVT 3.0: 16-bit words: TIME_HIGH, TIME_LOW, ADDR_Y, ADDR_X, a VECT_BASE_X + VECT_12
@@ -65,6 +72,7 @@ words = []
 for t, x, y, p in events(20, 1268, 720):
     words += [0x8 << 12 | (t >> 12) & 0xFFF, 0x6 << 12 | t & 0xFFF, 0x0 << 12 | y, 0x2 << 12 | p << 11 | x]
 words += [0x3 << 12 | 1 << 11 | 100, 0x4 << 12 | 0b101010101010, 0x5 << 12 | 0xFF]
+words += [0xA << 12 | 2 << 8 | 1, 0xA << 12 | 2 << 8]  # EXT_TRIGGER: channel 2, rising then falling
 write("raw", "evt3.raw", hdr + b"".join(struct.pack("<H", w) for w in words))
 
 # Containers: magic only (run.sh adds real samples when ../shared/data is there)
@@ -88,6 +96,7 @@ def davis_stream(options, transfer, wait_reset):
             base += (t - base) // 0x8000 * 0x8000
         word(0x8000 | (t - base)); word(0x1000 | y); word((0x3000 if p else 0x2000) | x)
     word(0x4000 | 0x123); word(0x5000 | 0x045); word(0x6000 | 0x3FF); word(0x0005)  # APS / IMU / misc / special
+    word(0x0003); word(0x0002)                                                        # external input edges
     return bytes(out)
 
 write("davis_decoder", "davis240.bin", davis_stream(0x00, 200, False))
