@@ -83,17 +83,6 @@ inline Mat drawFilterBeforeAfter(const std::vector<Event>& window, const std::ve
     return pair;
 }
 
-// JET over [range[0], range[1]] px (black where d <= 0, no disparity).
-inline Mat colourDisparity(const Mat& d, Vec2i range)
-{
-    Mat scaled, colour;
-    const double span = std::max(1, range[1] - range[0]);
-    d.convertTo(scaled, CV_8U, 255.0 / span, -255.0 * range[0] / span);
-    applyColorMap(scaled, colour, COLORMAP_JET);
-    colour.setTo(Scalar::all(0), d <= 0);
-    return colour;
-}
-
 // Bars with the first and last bin labelled "0" and the range end.
 inline void drawHistogram(const std::vector<int>& h, const std::string& path, const std::string& title,
                    const std::string& endLabel = "10 px")

@@ -6,6 +6,7 @@
 
 #include "sample_evaluation.hpp"
 #include "sample_evaluation_pictures.hpp"
+#include "sample_pictures.hpp"
 
 #include <fstream>
 #include <iostream>
@@ -171,12 +172,11 @@ inline void writeEvaluationReport(const EvaluationReport& r, const EvaluationTot
     if (disparities)
     {
         // Both on the scale of the disparities the truth holds (0 there: none).
-        Mat truth;
-        acc.lastTruth.convertTo(truth, CV_32F);
+        Mat truth = acc.lastTruth.clone();
         truth.setTo(-1, truth <= 0);
         const Vec2i range = disparityDisplayRange(truth, 0, 255);
         Mat pair;
-        hconcat(colourDisparity(acc.lastEstimate, range), colourDisparity(acc.lastTruth, range), pair);
+        hconcat(sampleColourDisparity(acc.lastEstimate, range), sampleColourDisparity(acc.lastTruth, range), pair);
         resize(pair, pair, Size(), 2, 2, INTER_NEAREST);
         imwrite(r.output + "/disparity_vs_truth.png", pair);
     }

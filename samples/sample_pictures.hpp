@@ -1,5 +1,5 @@
 // Pictures of the sample programs: small sensors (a DVS128 is 128 x 128) are enlarged, pixel for pixel, so that
-// the pictures are large enough to look at.
+// the pictures are large enough to look at; disparity maps coloured as the matchers' renderDisparity() does.
 
 #ifndef OPENCV_EVENT_SAMPLES_SAMPLE_PICTURES_HPP
 #define OPENCV_EVENT_SAMPLES_SAMPLE_PICTURES_HPP
@@ -23,6 +23,17 @@ inline cv::Mat sampleEnlarge(const cv::Mat& picture, int zoom)
     cv::Mat big;
     cv::resize(picture, big, cv::Size(), zoom, zoom, cv::INTER_NEAREST);
     return big;
+}
+
+/** A disparity map (CV_32F) in JET over [@p range[0], @p range[1]] px, black where it is <= 0 (no disparity). */
+inline cv::Mat sampleColourDisparity(const cv::Mat& disparity, cv::Vec2i range)
+{
+    cv::Mat scaled, colour;
+    const double span = std::max(1, range[1] - range[0]);
+    disparity.convertTo(scaled, CV_8U, 255.0 / span, -255.0 * range[0] / span);
+    cv::applyColorMap(scaled, colour, cv::COLORMAP_JET);
+    colour.setTo(cv::Scalar::all(0), disparity <= 0);
+    return colour;
 }
 
 #endif

@@ -6,6 +6,7 @@
 #include <opencv2/event.hpp>
 #include <opencv2/imgproc.hpp>
 
+#include "sample_pictures.hpp"
 #include "stereo_method.hpp"
 
 #include <algorithm>
@@ -38,14 +39,9 @@ inline cv::Mat stereoWindowPicture(const StereoMethod& method, double t, const c
     if (truthDisparity.empty())
         return row;
     const cv::Size size = truthDisparity.size();
-    const cv::Vec2i scale = method.getDisparityDisplayRange(t, cv::event::CAMERA_LEFT);
-    const int minDisparity = scale[0];
-    const double range = std::max(1, scale[1] - scale[0]);
-    cv::Mat scaled, colour, below = cv::Mat::zeros(size.height, row.cols, CV_8UC3);
-    truthDisparity.convertTo(scaled, CV_8U, 255.0 / range, -255.0 * minDisparity / range);
-    cv::applyColorMap(scaled, colour, cv::COLORMAP_JET);
-    colour.setTo(cv::Scalar::all(0), truthDisparity <= 0);
-    colour.copyTo(below(cv::Rect(0, 0, size.width, size.height)));
+    cv::Mat below = cv::Mat::zeros(size.height, row.cols, CV_8UC3);
+    sampleColourDisparity(truthDisparity, method.getDisparityDisplayRange(t, cv::event::CAMERA_LEFT))
+        .copyTo(below(cv::Rect(0, 0, size.width, size.height)));
     cv::putText(below, "ground truth (left events of this window)", cv::Point(size.width + 4, 14),
                 cv::FONT_HERSHEY_PLAIN, 0.8, cv::Scalar::all(255), 1);
     cv::vconcat(row, below, row);

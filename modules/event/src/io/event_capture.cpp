@@ -339,15 +339,21 @@ public:
             std::stable_sort(pendingTriggers.begin(), pendingTriggers.end(), older);
     }
 
+    // How many of the pending triggers come before @p limit (or up to it, @p inclusive).
+    size_t triggersBefore(int64 limit, bool inclusive) const
+    {
+        size_t n = 0;
+        while (n < pendingTriggers.size() && (pendingTriggers[n].t < limit || (inclusive && pendingTriggers[n].t == limit)))
+            n++;
+        return n;
+    }
+
     // The grabbed packet's triggers: those before @p limit (or up to it, @p inclusive), or all that are left
     // once the stream has ended.
     void takePacketTriggers(int64 limit, bool inclusive)
     {
         const bool ended = pendingPos >= pending.size() && readerDone;
-        size_t n = 0;
-        while (n < pendingTriggers.size() &&
-               (ended || pendingTriggers[n].t < limit || (inclusive && pendingTriggers[n].t == limit)))
-            n++;
+        const size_t n = ended ? pendingTriggers.size() : triggersBefore(limit, inclusive);
         batchTriggers.assign(pendingTriggers.begin(), pendingTriggers.begin() + n);
         pendingTriggers.erase(pendingTriggers.begin(), pendingTriggers.begin() + n);
     }
@@ -482,10 +488,7 @@ public:
         }
         while (fill() && pending[pendingPos].t < target)
             pendingPos++;
-        size_t before = 0;
-        while (before < pendingTriggers.size() && pendingTriggers[before].t < target)
-            before++;
-        pendingTriggers.erase(pendingTriggers.begin(), pendingTriggers.begin() + before);
+        pendingTriggers.erase(pendingTriggers.begin(), pendingTriggers.begin() + triggersBefore(target, false));
         windowStart = target;
         windowStarted = true;
     }

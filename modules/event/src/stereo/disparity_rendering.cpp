@@ -47,8 +47,18 @@ void activeDisparityMap(const ActiveEstimateMap (&sensors)[2], Size size, double
         }
 }
 
-void renderDisparityMap(const Mat_<float>& disparity, Vec2i range, bool colourBar, OutputArray image)
+Vec2i activeDisparityDisplayRange(const ActiveEstimateMap (&sensors)[2], Size size, double t, int camera,
+                                  int minDisparity, int maxDisparity, const char* caller)
 {
+    Mat_<float> disparity;
+    activeDisparityMap(sensors, size, t, camera, caller, disparity);
+    return disparityDisplayRange(disparity, minDisparity, maxDisparity);
+}
+
+void renderDisparityMap(const Mat_<float>& disparity, int searchMin, int searchMax, bool colourBar,
+                        OutputArray image)
+{
+    const Vec2i range = disparityDisplayRange(disparity, searchMin, searchMax);
     const int minDisparity = range[0], maxDisparity = range[1];
     const int width = disparity.cols, height = disparity.rows;
     const int barWidth = colourBar ? 56 : 0;

@@ -17,9 +17,15 @@ getActiveDisparity(). @p caller names the call in the error for a camera other t
 void activeDisparityMap(const ActiveEstimateMap (&sensors)[2], Size size, double t, int camera, const char* caller,
                         OutputArray disparity);
 
-/** That map colour-coded, JET from @p range[0] (blue) to @p range[1] (red), black where there is no
-disparity, with a labelled colour bar on the right when @p colourBar is set: both matchers' renderDisparity(). */
-void renderDisparityMap(const Mat_<float>& disparity, Vec2i range, bool colourBar, OutputArray image);
+/** The colour scale of that map at time @p t within the search range: both matchers' getDisparityDisplayRange(). */
+Vec2i activeDisparityDisplayRange(const ActiveEstimateMap (&sensors)[2], Size size, double t, int camera,
+                                  int minDisparity, int maxDisparity, const char* caller);
+
+/** That map colour-coded, JET over its disparityDisplayRange() within [@p minDisparity, @p maxDisparity] (blue
+to red), black where there is no disparity, with a labelled colour bar on the right when @p colourBar is set:
+both matchers' renderDisparity(). */
+void renderDisparityMap(const Mat_<float>& disparity, int minDisparity, int maxDisparity, bool colourBar,
+                        OutputArray image);
 
 }  // namespace detail
 }  // namespace event

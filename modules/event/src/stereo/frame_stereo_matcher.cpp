@@ -54,15 +54,12 @@ public:
     {
         Mat_<float> disparity;
         activeDisparityMap(estimates_, params_.sensorSize, t, camera, "FrameStereoMatcher::renderDisparity", disparity);
-        renderDisparityMap(disparity, disparityDisplayRange(disparity, params_.minDisparity, params_.maxDisparity),
-                           colourBar, image);
+        renderDisparityMap(disparity, params_.minDisparity, params_.maxDisparity, colourBar, image);
     }
     Vec2i getDisparityDisplayRange(double t, int camera) const CV_OVERRIDE
     {
-        Mat_<float> disparity;
-        activeDisparityMap(estimates_, params_.sensorSize, t, camera, "FrameStereoMatcher::getDisparityDisplayRange",
-                           disparity);
-        return disparityDisplayRange(disparity, params_.minDisparity, params_.maxDisparity);
+        return activeDisparityDisplayRange(estimates_, params_.sensorSize, t, camera, params_.minDisparity,
+                                           params_.maxDisparity, "FrameStereoMatcher::getDisparityDisplayRange");
     }
     void getActiveDisparity(double t, OutputArray disparity, int camera) const CV_OVERRIDE
     {

@@ -147,16 +147,13 @@ void StereoEventMatcherImpl::renderDisparity(double t, OutputArray image, int ca
     Mat_<float> disparity;
     activeDisparityMap(estimates_, params_.sensorSize, t, camera,
                        "StereoEventMatcher::renderDisparity", disparity);
-    renderDisparityMap(disparity, disparityDisplayRange(disparity, params_.minDisparity, params_.maxDisparity),
-                       colourBar, image);
+    renderDisparityMap(disparity, params_.minDisparity, params_.maxDisparity, colourBar, image);
 }
 
 Vec2i StereoEventMatcherImpl::getDisparityDisplayRange(double t, int camera) const
 {
-    Mat_<float> disparity;
-    activeDisparityMap(estimates_, params_.sensorSize, t, camera, "StereoEventMatcher::getDisparityDisplayRange",
-                       disparity);
-    return disparityDisplayRange(disparity, params_.minDisparity, params_.maxDisparity);
+    return activeDisparityDisplayRange(estimates_, params_.sensorSize, t, camera, params_.minDisparity,
+                                       params_.maxDisparity, "StereoEventMatcher::getDisparityDisplayRange");
 }
 
 }  // namespace detail
