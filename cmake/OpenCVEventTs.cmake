@@ -9,35 +9,12 @@
 #
 # Result: target `opencv_event_ts` (static), whose PUBLIC include dirs give opencv2/ts.hpp.
 
-set(OPENCV_EVENT_OPENCV_SOURCE_DIR "" CACHE PATH
-    "OpenCV source tree of the installed OpenCV version; its modules/ts is compiled for the tests")
+include("${CMAKE_CURRENT_LIST_DIR}/OpenCVEventSource.cmake")
 
 function(opencv_event_add_ts_library target)
+  opencv_event_require_opencv_source("tests and perf tests need OpenCV's ts module sources" "modules/ts/src/ts.cpp"
+    "-DOPENCV_EVENT_BUILD_TESTS=OFF -DOPENCV_EVENT_BUILD_PERF_TESTS=OFF")
   set(src "${OPENCV_EVENT_OPENCV_SOURCE_DIR}")
-  if(NOT src OR NOT EXISTS "${src}/modules/ts/src/ts.cpp")
-    message(FATAL_ERROR
-      "opencv_event: tests and perf tests need OpenCV's ts module sources. Set "
-      "-DOPENCV_EVENT_OPENCV_SOURCE_DIR=<opencv-${OpenCV_VERSION} source tree> "
-      "(scripts/setup.sh fetches it with `apt-get source opencv`), or configure with "
-      "-DOPENCV_EVENT_BUILD_TESTS=OFF -DOPENCV_EVENT_BUILD_PERF_TESTS=OFF.")
-  endif()
-
-  # ts compiles against the installed headers: a source tree of another version would not match them.
-  file(STRINGS "${src}/modules/core/include/opencv2/core/version.hpp" _ver_lines
-       REGEX "^#define CV_VERSION_(MAJOR|MINOR|REVISION)[ \t]+[0-9]+")
-  set(_src_version "")
-  foreach(_part MAJOR MINOR REVISION)
-    foreach(_line ${_ver_lines})
-      if(_line MATCHES "CV_VERSION_${_part}[ \t]+([0-9]+)")
-        list(APPEND _src_version "${CMAKE_MATCH_1}")
-      endif()
-    endforeach()
-  endforeach()
-  string(REPLACE ";" "." _src_version "${_src_version}")
-  if(NOT _src_version VERSION_EQUAL OpenCV_VERSION)
-    message(FATAL_ERROR "opencv_event: ${src} is OpenCV ${_src_version}, but the installed OpenCV is "
-                        "${OpenCV_VERSION}; ts must be compiled from the matching source.")
-  endif()
 
   set(gen "${CMAKE_CURRENT_BINARY_DIR}/opencv_ts_generated")
   file(MAKE_DIRECTORY "${gen}")

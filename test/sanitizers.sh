@@ -26,7 +26,7 @@ echo "== sanitizers: building in $build"
 cmake -S "$repo" -B "$build" "${generator[@]}" "${launcher[@]}" -DCMAKE_BUILD_TYPE=Debug \
   -DCMAKE_CXX_FLAGS="$flags" -DCMAKE_C_FLAGS="$flags" -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=address,undefined" \
   -DCMAKE_SHARED_LINKER_FLAGS="-fsanitize=address,undefined" \
-  -DOPENCV_EVENT_OPENCV_SOURCE_DIR="$src" -DOPENCV_EVENT_BUILD_CONTRIB_TEST=OFF -DOPENCV_EVENT_BUILD_PERF_TESTS=OFF \
+  -DOPENCV_EVENT_OPENCV_SOURCE_DIR="$src" -DOPENCV_EVENT_BUILD_CONTRIB_TEST=OFF -DOPENCV_EVENT_BUILD_PERF_TESTS=OFF -DOPENCV_EVENT_BUILD_PYTHON=OFF \
   > "$build.configure.log" 2>&1 || { tail -40 "$build.configure.log"; exit 1; }
 cmake --build "$build" > "$build.build.log" 2>&1 || { tail -60 "$build.build.log"; exit 1; }
 echo "== sanitizers: opencv_test_event under ASan + UBSan"
@@ -88,7 +88,7 @@ tflags="-fsanitize=thread -fno-omit-frame-pointer -g -O1"
 cmake -S "$repo" -B "$tsan" "${generator[@]}" "${launcher[@]}" -DCMAKE_BUILD_TYPE=Debug \
   -DCMAKE_CXX_FLAGS="$tflags" -DCMAKE_C_FLAGS="$tflags" -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=thread" \
   -DCMAKE_SHARED_LINKER_FLAGS="-fsanitize=thread" \
-  -DOPENCV_EVENT_OPENCV_SOURCE_DIR="$src" -DOPENCV_EVENT_BUILD_CONTRIB_TEST=OFF -DOPENCV_EVENT_BUILD_PERF_TESTS=OFF \
+  -DOPENCV_EVENT_OPENCV_SOURCE_DIR="$src" -DOPENCV_EVENT_BUILD_CONTRIB_TEST=OFF -DOPENCV_EVENT_BUILD_PERF_TESTS=OFF -DOPENCV_EVENT_BUILD_PYTHON=OFF \
   > "$tsan.configure.log" 2>&1 || { tail -40 "$tsan.configure.log"; exit 1; }
 cmake --build "$tsan" --target opencv_test_event > "$tsan.build.log" 2>&1 || { tail -60 "$tsan.build.log"; exit 1; }
 echo "== sanitizers: StereoEventMatcher's row bands and the live cameras' threads under TSan"

@@ -38,7 +38,7 @@ CC=clang CXX=clang++ cmake -S "$repo" -B "$build" -G Ninja "${launcher[@]}" -DCM
   -DCMAKE_CXX_FLAGS="$flags" -DCMAKE_C_FLAGS="$flags" \
   -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=address,undefined" -DCMAKE_SHARED_LINKER_FLAGS="-fsanitize=address,undefined" \
   -DOPENCV_EVENT_BUILD_TESTS=OFF -DOPENCV_EVENT_BUILD_PERF_TESTS=OFF -DOPENCV_EVENT_BUILD_SAMPLES=OFF \
-  -DOPENCV_EVENT_BUILD_BENCHMARKS=OFF -DOPENCV_EVENT_BUILD_CONTRIB_TEST=OFF -DOPENCV_EVENT_BUILD_FUZZERS=ON \
+  -DOPENCV_EVENT_BUILD_BENCHMARKS=OFF -DOPENCV_EVENT_BUILD_CONTRIB_TEST=OFF -DOPENCV_EVENT_BUILD_FUZZERS=ON -DOPENCV_EVENT_BUILD_PYTHON=OFF \
   > "$build.configure.log" 2>&1 || { tail -40 "$build.configure.log"; exit 1; }
 cmake --build "$build" > "$build.build.log" 2>&1 || { tail -60 "$build.build.log"; exit 1; }
 

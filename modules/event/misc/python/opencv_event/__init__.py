@@ -1,0 +1,32 @@
+"""opencv_event: event cameras in OpenCV, from Python.
+
+    import opencv_event as ev
+
+gives the module's whole wrapped C++ API (the names of ``cv2.event`` in an OpenCV build with this module) plus
+NumPy event records (:mod:`opencv_event.records`) and iteration over recordings (:mod:`opencv_event.packets`).
+It works in both build modes: the standalone build ships the wrapped API in ``opencv_event._bindings`` (OpenCV's
+binding generator run on the module's headers); inside an OpenCV build with this module the package takes it
+from ``cv2.event``.
+"""
+import importlib.util as _importlib_util
+
+if _importlib_util.find_spec(__name__ + "._bindings") is not None:
+    from . import _bindings  # standalone build
+    _native, error = _bindings.event, _bindings.error
+    del _bindings
+else:
+    try:
+        import cv2 as _cv2
+        _native, error = _cv2.event, _cv2.error
+    except (ImportError, AttributeError) as _error:
+        raise ImportError("opencv_event: neither this package's own bindings (the standalone build) nor cv2.event "
+                          "(an OpenCV build with the event module) are there: build or install one of them") from _error
+
+for _name in dir(_native):
+    if not _name.startswith("__"):
+        globals()[_name] = getattr(_native, _name)
+
+from .records import (EVENT_DTYPE, TRIGGER_DTYPE, as_packet, as_records, as_trigger_records,  # noqa: E402
+                      from_columns, from_dv, from_metavision, from_tonic, to_columns)
+from .packets import EventCapture, packets  # noqa: E402
+from ._version import __version__  # noqa: E402  (written by either build)
