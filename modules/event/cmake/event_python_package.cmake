@@ -6,7 +6,7 @@ function(opencv_event_python_package_files package_dir install_dir)
   file(STRINGS "${CMAKE_CURRENT_FUNCTION_LIST_DIR}/../../../CMakeLists.txt" project_line
        REGEX "^project\\(opencv_event VERSION [0-9.]+")
   string(REGEX REPLACE ".* VERSION ([0-9.]+).*" "\\1" version "${project_line}")
-  file(GLOB py_files "${pysrc}/*.py")
+  file(GLOB py_files CONFIGURE_DEPENDS "${pysrc}/*.py")
   foreach(f ${py_files})
     get_filename_component(name "${f}" NAME)
     configure_file("${f}" "${package_dir}/${name}" COPYONLY)

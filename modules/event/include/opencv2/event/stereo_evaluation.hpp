@@ -49,20 +49,20 @@ struct CV_EXPORTS_W_SIMPLE StereoEventScores
     enum { CONFIDENCE_BINS = 1000 };
 
     /** Estimated over visible signal events [%] (0 when there are none). */
-    double density() const { return visibleSignal > 0 ? 100.0 * estimated / visibleSignal : 0.0; }
+    CV_WRAP double density() const { return visibleSignal > 0 ? 100.0 * estimated / visibleSignal : 0.0; }
     /** Disparities within 1 px over estimated events [%] (0 when there are none). */
-    double precision() const { return estimated > 0 ? 100.0 * within1 / estimated : 0.0; }
+    CV_WRAP double precision() const { return estimated > 0 ? 100.0 * within1 / estimated : 0.0; }
     /** Left signal events with a disparity within 1 px, over all of them [%] (0 when there are none). */
-    double matchingRate() const { return leftSignal > 0 ? 100.0 * leftWithin1 / leftSignal : 0.0; }
+    CV_WRAP double matchingRate() const { return leftSignal > 0 ? 100.0 * leftWithin1 / leftSignal : 0.0; }
     /** Mean absolute disparity error over estimated events [px] (0 when there are none). */
-    double meanAbsError() const { return estimated > 0 ? absErrorSum / estimated : 0.0; }
+    CV_WRAP double meanAbsError() const { return estimated > 0 ? absErrorSum / estimated : 0.0; }
     /** Mean relative depth error over the estimated events with a depth (0 when there are none). */
-    double meanDepthError() const { return depthEstimated > 0 ? depthErrorSum / depthEstimated : 0.0; }
+    CV_WRAP double meanDepthError() const { return depthEstimated > 0 ? depthErrorSum / depthEstimated : 0.0; }
     /** Precision at a density [%]: the share within 1 px of the most confident estimates, as many as
         @p density % of the visible signal events (rounded to a whole event; within the confidence bin where
         they end, that bin's share). -1 when the estimates with a confidence do not reach that many, or none
         are wanted. */
-    double precisionAtDensity(double density) const;
+    CV_WRAP double precisionAtDensity(double density) const;
 };
 
 /** @brief Adds one packet's estimates to @p scores.

@@ -22,11 +22,19 @@ else:
         raise ImportError("opencv_event: neither this package's own bindings (the standalone build) nor cv2.event "
                           "(an OpenCV build with the event module) are there: build or install one of them") from _error
 
-for _name in dir(_native):
-    if not _name.startswith("__"):
-        globals()[_name] = getattr(_native, _name)
-
 from .records import (EVENT_DTYPE, TRIGGER_DTYPE, as_packet, as_records, as_trigger_records,  # noqa: E402
                       from_columns, from_dv, from_metavision, from_tonic, to_columns)
 from .packets import EventCapture, packets  # noqa: E402
+from ._accept_records import accepting_records as _accepting_records, forwarding_class as _forwarding_class  # noqa: E402
+
+# The wrapped API, each call taking records wherever it takes events (see _accept_records).
+for _name in dir(_native):
+    if _name.startswith("__") or _name == "EventCapture":
+        continue
+    _value = getattr(_native, _name)
+    if isinstance(_value, type):
+        _value = _forwarding_class(_value)
+    elif callable(_value):
+        _value = _accepting_records(_value)
+    globals()[_name] = _value
 from ._version import __version__  # noqa: E402  (written by either build)

@@ -13,49 +13,34 @@ import sys
 import time
 
 from . import records as _records
+from ._accept_records import forwarding_class
 
 
-class EventCapture:
-    """``cv::event::EventCapture`` (every method of the C++ class: open, read, get, set, retrieveTriggers, ...) that
-    is also iterable: iterating reads packets until the source ends, as :data:`EVENT_DTYPE` records.
-
-    It holds the wrapped C++ object (``native``) and hands every call on to it: OpenCV 4.6's wrapped types cannot
-    be subclassed safely from Python (their deallocator frees a subclass's instance at the wrong address)."""
-
-    def __init__(self, *args, **kwargs):
-        from . import _native, error
-        try:
-            self.native = _native.EventCapture(*args, **kwargs)
-        except SystemError as failure:
-            # OpenCV 4.6's generated constructors report a C++ exception as a SystemError whose cause is the
-            # cv2.error that names the file and the problem: raise that one.
-            if isinstance(failure.__cause__, error):
-                raise failure.__cause__ from None
-            raise
-
-    def __getattr__(self, name):
-        if name == "native":  # the constructor failed
-            raise AttributeError(name)
-        return getattr(self.native, name)
-
-    def __iter__(self):
-        return self.iterate()
-
-    def iterate(self, raw=False, progress=False):
-        """Packets until the end of the source (``raw=True``: as read() gives them, N x 1 x 16 uint8). `progress`:
-        a line on stderr, as the C++ samples print it."""
-        report = _Progress(self.getSource()) if progress else None
-        events = 0
-        while True:
-            ok, packet = self.native.read()
-            if not ok:
-                break
-            events += packet.shape[0]
-            if report:
-                report.update(self.native.get(_constant("EVENT_CAP_PROP_PROGRESS")), events)
-            yield packet if raw else _records.as_records(packet)
+def _iterate(self, raw=False, progress=False):
+    """Packets until the end of the source, as EVENT_DTYPE records (``raw=True``: as read() gives them, N x 1 x 16
+    uint8). `progress`: a line on stderr, as the C++ samples print it."""
+    report = _Progress(self.getSource()) if progress else None
+    events = 0
+    while True:
+        ok, packet = self.native.read()
+        if not ok:
+            break
+        events += packet.shape[0]
         if report:
-            report.finish(self.native.get(_constant("EVENT_CAP_PROP_PROGRESS")), events)
+            report.update(self.native.get(_constant("EVENT_CAP_PROP_PROGRESS")), events)
+        yield packet if raw else _records.as_records(packet)
+    if report:
+        report.finish(self.native.get(_constant("EVENT_CAP_PROP_PROGRESS")), events)
+
+
+def _event_capture():
+    from . import _native
+    return forwarding_class(_native.EventCapture, {"__iter__": lambda self: _iterate(self), "iterate": _iterate})
+
+
+#: ``cv::event::EventCapture``, every method of the C++ class (open, read, get, set, retrieveTriggers, ...), that
+#: also iterates: ``for packet in EventCapture(path)`` reads packets of EVENT_DTYPE records until the source ends.
+EventCapture = _event_capture()
 
 
 def packets(source, window_us=None, events=None, progress=False, raw=False, properties=None):

@@ -19,10 +19,25 @@ TRIGGER_DTYPE = np.dtype({"names": ["t", "channel", "kind", "camera"],
                           "offsets": [0, 8, 10, 11], "itemsize": 16})
 
 
+def _same_fields(a, dtype):
+    """Records with `dtype`'s fields in another layout: NumPy packs them (drops the record's padding) when it
+    concatenates or promotes structured arrays."""
+    return a.dtype.names == dtype.names and all(a.dtype[n] == dtype[n] for n in dtype.names)
+
+
+def _relaid(a, dtype):
+    out = np.empty(a.shape, dtype)
+    for name in dtype.names:
+        out[name] = a[name]
+    return out
+
+
 def _view(array, dtype, what):
     a = np.asarray(array)
     if a.dtype == dtype:
         return a.reshape(-1)
+    if _same_fields(a, dtype):
+        return _relaid(a, dtype).reshape(-1)
     if a.dtype != np.uint8 or a.size % 16 != 0 or (a.ndim > 0 and a.shape[-1] != 16):
         raise ValueError("%s: expected %s records or a uint8 array of 16-byte records (N x 1 x 16), got %s %s"
                          % (what, what, a.dtype, a.shape))
@@ -31,7 +46,8 @@ def _view(array, dtype, what):
 
 def as_records(packet):
     """The events of `packet` (what the module's calls return: uint8, N x 1 x 16) as :data:`EVENT_DTYPE` records,
-    a view of the same memory (a copy only where `packet` is not contiguous). Records are returned as they are."""
+    a view of the same memory (a copy only where `packet` is not contiguous). Records are returned as they are
+    (records in NumPy's packed layout, as np.concatenate gives them, are copied into the 16-byte one)."""
     return _view(packet, EVENT_DTYPE, "events")
 
 
@@ -42,10 +58,13 @@ def as_trigger_records(packet):
 
 def as_packet(events):
     """`events` (:data:`EVENT_DTYPE` records, or already a packet) as the N x 1 x 16 uint8 array the module's calls
-    take: a view of the same memory (a copy only where the records are not contiguous)."""
+    take: a view of the same memory (a copy only where the records are not contiguous or in NumPy's packed layout,
+    as np.concatenate gives them)."""
     a = np.asarray(events)
     if a.dtype == np.uint8:
         return _view(a, EVENT_DTYPE, "events").view(np.uint8).reshape(-1, 1, 16)
+    if a.dtype != EVENT_DTYPE and _same_fields(a, EVENT_DTYPE):
+        a = _relaid(a, EVENT_DTYPE)  # a packed copy (np.concatenate's): back to the 16-byte record
     if a.dtype != EVENT_DTYPE:
         raise ValueError("events: expected EVENT_DTYPE records (see from_columns and the from_* converters), got %s"
                          % (a.dtype,))

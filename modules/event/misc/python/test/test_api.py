@@ -74,6 +74,9 @@ def test_score_stereo_events():
         (scores.leftSignal, scores.leftWithin1, scores.visibleSignal, scores.estimated, scores.within1)
     assert (scores.leftEstimated, scores.leftWithin2) == (2, 1), (scores.leftEstimated, scores.leftWithin2)
     assert abs(scores.absErrorSum - 0.5) < 1e-6, scores.absErrorSum
+    # The summary figures from those counts: 1 of 2 visible estimated, 1 of 1 within 1 px, 1 of 3 left events.
+    assert (scores.density(), scores.precision(), scores.meanAbsError()) == (50.0, 100.0, 0.5)
+    assert abs(scores.matchingRate() - 100.0 / 3) < 1e-12
     # With confidences (1000 bins over 0..1), twice through the same scores: the estimated event (confidence 0.75)
     # lands in its bin both times, so the bins cross to Python and back.
     confidence = np.array([[0.75], [0.5], [0.0]], np.float32)

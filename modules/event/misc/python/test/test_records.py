@@ -1,5 +1,9 @@
 """NumPy records: views of the module's 16-byte events without a copy, and the converters from other tools' layouts,
 against records written out by hand."""
+import os
+import shutil
+import tempfile
+
 import numpy as np
 import pytest
 
@@ -60,3 +64,53 @@ def test_bad_input_is_refused():
         ev.as_records(np.zeros((3, 15), np.uint8))
     with pytest.raises(ValueError, match="EVENT_DTYPE records"):
         ev.as_packet(np.zeros(3, np.float64))
+
+
+def test_every_call_that_takes_events_takes_records():
+    sim = ev.StereoEventSimulator_create("two_planes")
+    ok, packet, truth = sim.generate(60000.0)
+    records = ev.as_records(packet).copy()  # records of their own, not a view of the packet
+    size = tuple(sim.getSensorSize())
+    # Module functions.
+    left_p, right_p = ev.splitStereoEvents(packet)
+    left_r, right_r = ev.splitStereoEvents(records)
+    assert np.array_equal(left_p, left_r) and np.array_equal(right_p, right_r)
+    # Methods of objects from factories, and of objects that calls return.
+    matcher = ev.StereoEventMatcher_create(size, ev.STEREO_COUPLED)
+    from_packet = matcher.process(packet)
+    matcher.reset()
+    from_records = matcher.process(records)
+    assert all(np.array_equal(a, b) for a, b in zip(from_packet, from_records))
+    assert isinstance(matcher, ev.StereoEventMatcher)
+    estimator = matcher.getLifetimeEstimator(ev.CAMERA_LEFT)
+    assert isinstance(estimator, ev.LifetimeEstimator) and estimator.process(ev.as_records(left_p))[0].shape[0] == len(left_p)
+    lifetimes = ev.LifetimeEstimator_create(size).process(left_p)[0]
+    assert np.array_equal(ev.LifetimeEstimator_create(size).process(ev.as_records(left_p))[0], lifetimes)
+    surface = ev.EventSurface_create(size)
+    surface.update(records)
+    assert surface.getEventCount() == len(records)
+    kept, mask = ev.BackgroundActivityFilter_create(size, 2000.0).filter(records)
+    assert np.array_equal(mask, ev.BackgroundActivityFilter_create(size, 2000.0).filter(packet)[1])
+    # A class constructed directly, and a wrapped object handed to another call.
+    folder = tempfile.mkdtemp()
+    writer = ev.EventWriter(os.path.join(folder, "records.aedat4"), size)
+    left = ev.as_records(left_p).copy()
+    writer.write(left)
+    writer.release()
+    capture = ev.EventCapture(os.path.join(folder, "records.aedat4"))
+    capture.set(ev.EVENT_CAP_PROP_BATCH_EVENTS, len(left))
+    assert np.array_equal(next(iter(capture)), left)
+    fresh = ev.StereoEventSimulator_create("moving_line")
+    written = ev.writeSimulatedRecording(fresh, os.path.join(folder, "sim.aedat4"), 50000.0)
+    assert written == ev.StereoEventSimulator_create("moving_line").generate(50000.0)[1].shape[0] > 0
+    shutil.rmtree(folder)
+
+
+def test_concatenated_records_are_taken_in_numpy_packed_layout():
+    a = ev.from_columns([1, 2], [3, 4], [5, 6], [1, 0])
+    b = ev.from_columns([7], [8], [9], [1], camera=1)
+    joined = np.concatenate([a, b])  # NumPy drops the record's padding here
+    assert ev.as_records(joined).tolist() == a.tolist() + b.tolist()
+    assert ev.as_packet(joined).shape == (3, 1, 16)
+    left, right = ev.splitStereoEvents(joined)
+    assert ev.as_records(right).tolist() == b.tolist()
