@@ -9,7 +9,7 @@ set -euo pipefail
 cache=${OPENCV_EVENT_CACHE:-/var/cache/opencv_event}
 packages=(build-essential cmake ninja-build ccache pkg-config git xz-utils dpkg-dev
           libopencv-dev libeigen3-dev libgtest-dev libusb-1.0-0-dev liblz4-dev libzstd-dev libbz2-dev libsqlite3-dev libhdf5-dev
-          libpng-dev libjpeg-dev zlib1g-dev python3-dev python3-numpy python3-pytest python3-opencv
+          libpng-dev libjpeg-dev zlib1g-dev python3-dev python3-numpy python3-pytest python3-opencv python3-matplotlib python3-venv python3-pip python3-setuptools python3-wheel
           clang libclang-rt-14-dev)  # libFuzzer + sanitizer runtimes for test/fuzz
 
 sudo=()
