@@ -78,12 +78,13 @@ if command -v ccache >/dev/null; then ccache -s | grep -Ei "hit|miss" | head -4 
 echo "== contrib_build: opencv_test_event"
 "$build/bin/opencv_test_event"
 if [[ " ${python[*]} " == *" -DBUILD_opencv_python3=ON "* ]]; then
-  # The package opencv_event on this build's cv2.event: the same pytest suite as the standalone build's ctest
-  # (the command-line tools for the recordings' figures come from the standalone build when it is there).
+  # The package opencv_event on this build's cv2.event: the same pytest suites as the standalone build's ctests
+  # python_package and python_sample (the command-line tools they compare with come from the standalone build
+  # when it is there).
   echo "== contrib_build: the Python package opencv_event on cv2.event (pytest)"
   PYTHONPATH="$(dirname "$(find "$build/lib" -name 'cv2*.so' -print -quit)")" PYTHONDONTWRITEBYTECODE=1 \
     OPENCV_EVENT_BUILD_MODE=contrib OPENCV_EVENT_TOOLS="${OPENCV_EVENT_TOOLS:-$repo/build/samples}" \
-    /usr/bin/python3 -m pytest -q -rs -p no:cacheprovider "$repo/modules/event/misc/python/test"
+    /usr/bin/python3 -m pytest -q -rs -p no:cacheprovider "$repo/modules/event/misc/python/test" "$repo/test/python"
 else
   echo "== contrib_build: SKIP the Python bindings: /usr/bin/python3 with numpy and Python.h not found (scripts/setup.sh installs them)"
 fi

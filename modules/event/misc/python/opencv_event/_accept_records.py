@@ -54,6 +54,10 @@ class _ForwardingType(type):
         value = getattr(native_type, name)
         return accepting_records(value) if callable(value) and not isinstance(value, type) else value
 
+    def __dir__(cls):
+        native_type = cls.__dict__.get("_native_type")
+        return sorted(set(super().__dir__()) | (set(dir(native_type)) if native_type is not None else set()))
+
 
 class Forwarding(metaclass=_ForwardingType):
     """Holds one wrapped C++ object (``native``) and forwards every attribute to it."""
@@ -86,6 +90,10 @@ class Forwarding(metaclass=_ForwardingType):
 
     def __setattr__(self, name, value):
         setattr(self.native, name, _argument(value))
+
+    def __dir__(self):
+        # Tab completion and help() list the C++ object's methods too.
+        return sorted(set(super().__dir__()) | set(dir(self.native)))
 
     def __repr__(self):
         return "<opencv_event.%s %r>" % (type(self).__name__, self.native)

@@ -114,3 +114,14 @@ def test_concatenated_records_are_taken_in_numpy_packed_layout():
     assert ev.as_packet(joined).shape == (3, 1, 16)
     left, right = ev.splitStereoEvents(joined)
     assert ev.as_records(right).tolist() == b.tolist()
+
+
+def test_wrapped_classes_show_and_create_like_the_cpp_ones():
+    matcher = ev.StereoEventMatcher.create((64, 24), ev.STEREO_DECOUPLED)  # the static method on the class
+    assert isinstance(matcher, ev.StereoEventMatcher) and matcher.getMode() == ev.STEREO_DECOUPLED
+    assert "process" in dir(matcher) and "setMaxDisparity" in dir(ev.StereoEventMatcher)
+    matcher.setMaxDisparity(17)
+    assert matcher.getMaxDisparity() == 17 and matcher.native.getMaxDisparity() == 17
+    scores = ev.StereoEventScores()
+    scores.leftSignal = 4  # a property set through the forwarding object lands on the C++ struct
+    assert scores.native.leftSignal == 4
