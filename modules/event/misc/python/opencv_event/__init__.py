@@ -9,11 +9,17 @@ binding generator run on the module's headers); inside an OpenCV build with this
 from ``cv2.event``.
 """
 import importlib.util as _importlib_util
+import sys as _sys
 
-if _importlib_util.find_spec(__name__ + "._bindings") is not None:
-    from . import _bindings  # standalone build
-    _native, error = _bindings.event, _bindings.error
-    del _bindings
+# Both builds register their API as the module "cv2.event": where one is loaded already (an OpenCV build with this
+# module imported before, or this package's own extension), it is taken; loading the other as well would add to it.
+_loaded = _sys.modules.get("cv2.event")
+_own = _sys.modules.get(__name__ + "._bindings")
+if _loaded is None and _importlib_util.find_spec(__name__ + "._bindings") is not None:
+    from . import _bindings as _own  # standalone build
+    _native, error = _own.event, _own.error
+elif _loaded is not None and _own is not None and _loaded is _own.event:
+    _native, error = _loaded, _own.error
 else:
     try:
         import cv2 as _cv2
