@@ -1,23 +1,13 @@
 """samples/python/event_stereo.py against the C++ event_stereo on the same input: the same per-event output bit for bit,
 the same summary (but for the timing and the video that only the C++ program writes), and its pictures."""
-import os
 import pathlib
-import shutil
 import subprocess
 import sys
 
-import pytest
-
 REPO = pathlib.Path(__file__).resolve().parents[2]
 SAMPLE = REPO / "samples" / "python" / "event_stereo.py"
-
-
-def tool(name):
-    folder = os.environ.get("OPENCV_EVENT_TOOLS")
-    path = os.path.join(folder, name) if folder else shutil.which(name)
-    if not path or not os.access(path, os.X_OK):
-        pytest.skip("%s not found: set OPENCV_EVENT_TOOLS to the folder of the built samples" % name)
-    return path
+sys.path.insert(0, str(REPO / "modules" / "event" / "misc" / "python" / "test"))
+from event_test_support import require_recording, require_tool as tool  # noqa: E402
 
 
 def run_both(tmp_path, args):
@@ -48,10 +38,7 @@ def assert_same_run(cpp, py):
 
 
 def test_a_real_pair_gives_what_event_stereo_gives(tmp_path):
-    data = pathlib.Path(os.environ.get("OPENCV_EVENT_DATA", REPO.parent / "shared" / "data"))
-    fan = data / "stereo_dvs128_tum" / "Fan_disp8.dat"
-    if not fan.exists():
-        pytest.skip("%s not found (the real recordings are not part of the repository)" % fan)
+    fan = require_recording("stereo_dvs128_tum/Fan_disp8.dat")
     assert_same_run(*run_both(tmp_path, ["--input=%s" % fan, "--left-camera-value=1", "--sensor=DVS128"]))
 
 

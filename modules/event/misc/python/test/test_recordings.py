@@ -6,7 +6,7 @@ import numpy as np
 import pytest
 
 import opencv_event as ev
-from conftest import require_recording, require_tool
+from event_test_support import require_recording, require_tool
 
 SAMPLES = ["aestream_davis346.aedat4", "tonic_sample_dvxplorer.aedat4", "tonic_sample_ncars.dat", "evt2_sample.raw",
            "evt3_sample.raw", "ecpy_test_events_1_ros1.bag", "ecpy_legacy_eventarray_ros2", "ecpy_test_events_2_mcap"]

@@ -1,4 +1,4 @@
-"""Shared helpers of the Python tests: where the real recordings and the command-line tools are."""
+"""Helpers of the Python tests (these and test/python's): where the real recordings and the command-line tools are."""
 import os
 import pathlib
 import shutil
