@@ -57,10 +57,12 @@ function(opencv_event_add_python target)
   set_target_properties(${target} PROPERTIES PREFIX "" OUTPUT_NAME "_bindings" SUFFIX "${suffix}"
     LIBRARY_OUTPUT_DIRECTORY "${pkg}")
 
-  # Where the interpreter looks for packages under the install prefix (Debian: lib/python3/dist-packages).
+  # Where the interpreter looks for packages under the install prefix: its purelib path relative to the prefix
+  # (Debian's scheme writes <prefix>/local/lib/python3.X/dist-packages, meant for the prefix /usr: under /usr/local,
+  # the default one, that is lib/python3.X/dist-packages).
   if(NOT OPENCV_EVENT_PYTHON_INSTALL_DIR)
     execute_process(COMMAND "${Python3_EXECUTABLE}" -c
-      "import sys, sysconfig; p = sysconfig.get_path('purelib', vars={'base': '@P@', 'platbase': '@P@'}); print(p.replace('@P@/', '').replace('local/', '', 1) if 'dist-packages' in p else p.replace('@P@/', ''))"
+      "import os, sysconfig; p = os.path.relpath(sysconfig.get_path('purelib', vars={'base': '/P', 'platbase': '/P'}), '/P'); print(p[len('local/'):] if p.startswith('local/') else p)"
       OUTPUT_VARIABLE dir OUTPUT_STRIP_TRAILING_WHITESPACE)
     set(OPENCV_EVENT_PYTHON_INSTALL_DIR "${dir}" CACHE PATH "Python package directory, relative to the install prefix")
   endif()

@@ -93,10 +93,9 @@ def check_clocks(a):
     left, right = int(np.sum(events["camera"] == 0)), int(np.sum(events["camera"] == 1))
     if min(left, right) < 1000:
         return 0.0, "not estimated (left %d events, right %d in the first %.1f s)" % (left, right, seconds)
-    packet = ev.as_packet(events)
     if a.calib:
-        packet = ev.readStereoCalibration(a.calib).rectifyEvents(packet)
-    offset, uncertainty = ev.estimateClockOffset(packet, size, a.min_disparity, a.max_disparity)
+        events = ev.readStereoCalibration(a.calib).rectifyEvents(events)
+    offset, uncertainty = ev.estimateClockOffset(events, size, a.min_disparity, a.max_disparity)
     text = "%+.2f ms +- %.2f ms (estimateClockOffset, first %.1f s)" % (offset * 1e-3, uncertainty * 1e-3, seconds)
     if uncertainty <= MAX_CLOCK_UNCERTAINTY_US:
         return math.copysign(math.floor(abs(offset) / 10 + 0.5), offset) * 0.01, text + ": applied"  # as std::round
@@ -118,7 +117,7 @@ class Tally:
 
     def add(self, records, disparity, flags, confidence, truth=None):
         if truth is not None:
-            self.scores = ev.scoreStereoEvents(ev.as_packet(records), disparity, truth,
+            self.scores = ev.scoreStereoEvents(records, disparity, truth,
                                                self.scores if self.scores is not None else ev.StereoEventScores())
         camera = records["camera"].astype(np.intp)
         found = disparity >= 0
@@ -208,7 +207,7 @@ def main(argv):
     last_eighth = 0
     seconds = 0.0
     for records in cap.iterate(progress=True):
-        truth = truth_reader.read(ev.as_packet(records)) if truth_reader is not None else None
+        truth = truth_reader.read(records) if truth_reader is not None else None
         pair.add(records)
         start = time.perf_counter()
         disparity, lifetime, flags, depth, _flow, confidence = matcher.process(records)
@@ -301,10 +300,9 @@ class PairSample:
 
 def pair_rows(records, size, a, calibration):
     """The row alignment and the line-up over the first two seconds (checkStereoPair), as event_stereo writes them."""
-    packet = ev.as_packet(records)
     if calibration is not None and len(records):
-        packet = calibration.rectifyEvents(packet)
-    c = ev.checkStereoPair(packet, size, a.min_disparity, a.max_disparity)
+        records = calibration.rectifyEvents(records)
+    c = ev.checkStereoPair(records, size, a.min_disparity, a.max_disparity)
     n = int(c.leftEvents + c.rightEvents)
     span = "first %.1f s" % (c.spanUs * 1e-6)
     if n < 2000:

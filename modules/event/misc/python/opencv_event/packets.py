@@ -5,8 +5,8 @@
     for packet in ev.packets("rec.raw", events=100000, progress=True):
         ...
 
-A packet is an array of :data:`~opencv_event.records.EVENT_DTYPE` records, a view of what ``read()`` returned:
-``as_packet(packet)`` hands it to the module's calls without a copy.
+A packet is an array of :data:`~opencv_event.records.EVENT_DTYPE` records, a view of what ``read()`` returned; the
+package's calls take it as it is.
 """
 import os
 import sys
@@ -46,7 +46,8 @@ EventCapture = _event_capture()
 def packets(source, window_us=None, events=None, progress=False, raw=False, properties=None):
     """Iterates over a recording (any format EventCapture reads) in packets of `window_us` microseconds (default
     EventCapture's 10 ms) or of `events` events. `properties`: {EVENT_CAP_PROP_...: value} set before opening
-    (e.g. the text format's columns). Raises cv2.error naming the file and the problem when it cannot be read."""
+    (e.g. the text format's columns). A generator: the first packet asked for opens the source, and raises ev.error
+    naming the file and the problem when it cannot be read."""
     if window_us is not None and events is not None:
         raise ValueError("packets: give window_us or events, not both")
     cap = EventCapture()
