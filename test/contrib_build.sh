@@ -78,6 +78,14 @@ if command -v ccache >/dev/null; then ccache -s | grep -Ei "hit|miss" | head -4 
 echo "== contrib_build: opencv_test_event"
 "$build/bin/opencv_test_event"
 if [[ " ${python[*]} " == *" -DBUILD_opencv_python3=ON "* ]]; then
+  # The same Python API as the standalone build's (both from OpenCV's generator on the same headers).
+  standalone_signatures="$repo/build/python_generated/pyopencv_signatures.json"
+  if [ -f "$standalone_signatures" ]; then
+    /usr/bin/python3 "$here/compare_python_signatures.py" "$standalone_signatures" \
+      "$build/modules/python_bindings_generator/pyopencv_signatures.json"
+  else
+    echo "== contrib_build: SKIP comparing the Python API with the standalone build's: $standalone_signatures not built"
+  fi
   # The package opencv_event on this build's cv2.event: the same pytest suites as the standalone build's ctests
   # python_package and python_sample (the command-line tools they compare with come from the standalone build
   # when it is there).
