@@ -41,8 +41,11 @@ class BuildWithCMake(build_py):
 
     def run(self):
         super().run()
-        build = os.path.join(os.path.abspath(self.get_finalized_command("build").build_temp), "cmake")
+        # Beside build/ (the same depth below the repository): ccache, with its base dir at the repository, then
+        # sees the same relative paths as in scripts/build.sh's build and reuses its objects.
+        build = os.path.join(HERE, "build-pip")
         launcher = ["-DCMAKE_C_COMPILER_LAUNCHER=ccache", "-DCMAKE_CXX_COMPILER_LAUNCHER=ccache"] if shutil.which("ccache") else []
+        launcher += ["-G", "Ninja"] if shutil.which("ninja") else []  # as scripts/build.sh: the same compile lines
         subprocess.check_call(["cmake", "-S", HERE, "-B", build, "-DCMAKE_BUILD_TYPE=Release"] + launcher + [
                                "-DOPENCV_EVENT_OPENCV_SOURCE_DIR=" + opencv_source_dir(),
                                "-DPython3_EXECUTABLE=" + sys.executable, "-DOPENCV_EVENT_PYTHON_BUNDLE_LIBRARY=ON",
