@@ -25,8 +25,15 @@ else:
         import cv2 as _cv2
         _native, error = _cv2.event, _cv2.error
     except (ImportError, AttributeError) as _error:
-        raise ImportError("opencv_event: neither this package's own bindings (the standalone build) nor cv2.event "
-                          "(an OpenCV build with the event module) are there: build or install one of them") from _error
+        import glob as _glob
+        import os as _os
+        import sysconfig as _sysconfig
+        _built = sorted(_os.path.basename(f) for f in _glob.glob(_os.path.join(_os.path.dirname(__file__), "_bindings*")))
+        raise ImportError(
+            "opencv_event: neither this package's own bindings (the standalone build) nor cv2.event (an OpenCV build "
+            "with the event module) are there: build or install one of them" +
+            ("; this package's extension (%s) was built for another Python than this one (%s, %s)"
+             % (", ".join(_built), _sys.executable, _sysconfig.get_config_var("EXT_SUFFIX")) if _built else "")) from _error
 
 from .records import (EVENT_DTYPE, TRIGGER_DTYPE, as_packet, as_records, as_trigger_records,  # noqa: E402
                       from_columns, from_dv, from_metavision, from_tonic, to_columns)
