@@ -68,7 +68,7 @@ def open_source(a, offset_ms):
     return cap
 
 
-def check_clocks(a):
+def check_clocks(a, calibration):
     """The right camera's clock against the left one's, as event_stereo finds it: (offset applied [ms], text)."""
     if a.truth and a.right_time_offset_ms == "auto":
         # The ground truth lines follow the recording's own times and order: nothing is shifted.
@@ -93,8 +93,8 @@ def check_clocks(a):
     left, right = int(np.sum(events["camera"] == 0)), int(np.sum(events["camera"] == 1))
     if min(left, right) < 1000:
         return 0.0, "not estimated (left %d events, right %d in the first %.1f s)" % (left, right, seconds)
-    if a.calib:
-        events = ev.readStereoCalibration(a.calib).rectifyEvents(events)
+    if calibration is not None:
+        events = calibration.rectifyEvents(events)
     offset, uncertainty = ev.estimateClockOffset(events, size, a.min_disparity, a.max_disparity)
     text = "%+.2f ms +- %.2f ms (estimateClockOffset, first %.1f s)" % (offset * 1e-3, uncertainty * 1e-3, seconds)
     if uncertainty <= MAX_CLOCK_UNCERTAINTY_US:
@@ -186,17 +186,16 @@ def main(argv):
 
     a = parse_args(argv)
     os.makedirs(a.output, exist_ok=True)
-    applied_ms, clock_text = check_clocks(a)
+    calibration = ev.readStereoCalibration(a.calib) if a.calib else None
+    applied_ms, clock_text = check_clocks(a, calibration)
     cap = open_source(a, applied_ms)
     size = tuple(cap.getSensorSize())
     mode = {"coupled": ev.STEREO_COUPLED, "decoupled": ev.STEREO_DECOUPLED, "fixed": ev.STEREO_FIXED_INTERVAL}[a.mode]
     matcher = ev.StereoEventMatcher_create(size, mode)
     matcher.setMinDisparity(a.min_disparity)
     matcher.setMaxDisparity(a.max_disparity)
-    calibration = None
     if a.calib:
         matcher.loadCalibration(a.calib)
-        calibration = ev.readStereoCalibration(a.calib)
     truth_reader = ev.SimulatedGroundTruthReader(a.truth) if a.truth else None
     csv = None if a.no_csv else open(os.path.join(a.output, "events.csv"), "w")
     if csv:

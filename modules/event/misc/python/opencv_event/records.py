@@ -32,15 +32,15 @@ def _relaid(a, dtype):
     return out
 
 
-def _view(array, dtype, what):
+def _view(array, dtype, what, dtype_name):
     a = np.asarray(array)
     if a.dtype == dtype:
         return a.reshape(-1)
     if _same_fields(a, dtype):
         return _relaid(a, dtype).reshape(-1)
     if a.dtype != np.uint8 or a.size % 16 != 0 or (a.ndim > 0 and a.shape[-1] != 16):
-        raise ValueError("%s: expected %s records or a uint8 array of 16-byte records (N x 1 x 16), got %s %s"
-                         % (what, what, a.dtype, a.shape))
+        raise ValueError("%s: expected %s records (see from_columns and the from_* converters) or a uint8 array of "
+                         "16-byte records (N x 1 x 16), got %s %s" % (what, dtype_name, a.dtype, a.shape))
     return np.ascontiguousarray(a).reshape(-1, 16).view(dtype).reshape(-1)
 
 
@@ -48,27 +48,19 @@ def as_records(packet):
     """The events of `packet` (what the module's calls return: uint8, N x 1 x 16) as :data:`EVENT_DTYPE` records,
     a view of the same memory (a copy only where `packet` is not contiguous). Records are returned as they are
     (records in NumPy's packed layout, as np.concatenate gives them, are copied into the 16-byte one)."""
-    return _view(packet, EVENT_DTYPE, "events")
+    return _view(packet, EVENT_DTYPE, "events", "EVENT_DTYPE")
 
 
 def as_trigger_records(packet):
     """The trigger events of `packet` (``EventCapture.retrieveTriggers``) as :data:`TRIGGER_DTYPE` records, a view."""
-    return _view(packet, TRIGGER_DTYPE, "trigger events")
+    return _view(packet, TRIGGER_DTYPE, "trigger events", "TRIGGER_DTYPE")
 
 
 def as_packet(events):
     """`events` (:data:`EVENT_DTYPE` records, or already a packet) as the N x 1 x 16 uint8 array the module's calls
     take: a view of the same memory (a copy only where the records are not contiguous or in NumPy's packed layout,
     as np.concatenate gives them)."""
-    a = np.asarray(events)
-    if a.dtype == np.uint8:
-        return _view(a, EVENT_DTYPE, "events").view(np.uint8).reshape(-1, 1, 16)
-    if a.dtype != EVENT_DTYPE and _same_fields(a, EVENT_DTYPE):
-        a = _relaid(a, EVENT_DTYPE)  # a packed copy (np.concatenate's): back to the 16-byte record
-    if a.dtype != EVENT_DTYPE:
-        raise ValueError("events: expected EVENT_DTYPE records (see from_columns and the from_* converters), got %s"
-                         % (a.dtype,))
-    return np.ascontiguousarray(a.reshape(-1)).view(np.uint8).reshape(-1, 1, 16)
+    return np.ascontiguousarray(as_records(events)).view(np.uint8).reshape(-1, 1, 16)
 
 
 def from_columns(t, x, y, p, camera=0):
