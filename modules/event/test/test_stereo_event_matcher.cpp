@@ -563,7 +563,8 @@ TEST(StereoEventMatcher, renderDisparity_colours_active_events_and_leaves_the_re
 {
     const Size size(64, 24);
     Ptr<StereoEventMatcher> m = StereoEventMatcher::create(size, STEREO_FIXED_INTERVAL);
-    m->setAveragingRadius(0);  // the picture shows each event's own estimate: without averaging, its output
+    m->setAveragingRadius(0);  // the picture shows each event's own estimate: without averaging and filling, its output
+    m->setFillRadius(0);
     const std::vector<Event> ev = edgePair(size, 12, 500, 300);
     float lastDisparity = -1;
     const Point lastMatched = processLastMatched(*m, ev, lastDisparity);
@@ -595,6 +596,7 @@ TEST(StereoEventMatcher, the_colour_scale_spans_the_disparities_present)
     const Size size(64, 24);
     Ptr<StereoEventMatcher> m = StereoEventMatcher::create(size, STEREO_FIXED_INTERVAL);
     m->setAveragingRadius(0);
+    m->setFillRadius(0);
     EXPECT_EQ(Vec2i(0, 40), m->getDisparityDisplayRange(0, CAMERA_LEFT));
     const std::vector<Event> ev = edgePair(size, 12, 500, 300);
     Mat disparity;
@@ -647,6 +649,7 @@ TEST(StereoEventMatcher, getActiveDisparity_holds_the_estimates_renderDisparity_
     const Size size(64, 24);
     Ptr<StereoEventMatcher> m = StereoEventMatcher::create(size, STEREO_FIXED_INTERVAL);
     m->setAveragingRadius(0);  // each event outputs its own estimate, the one the map holds
+    m->setFillRadius(0);
     const std::vector<Event> ev = edgePair(size, 12, 500, 300);
     float lastDisparity = -1;
     Mat_<float> lastOf[2] = { Mat_<float>(size, -1.f), Mat_<float>(size, -1.f) };

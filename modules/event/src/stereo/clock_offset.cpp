@@ -222,8 +222,10 @@ SlopeFit slopeAt(const std::vector<Event>& left, const std::vector<Event>& right
     Ptr<StereoEventMatcher> matcher = StereoEventMatcher::create(size, STEREO_COUPLED);
     matcher->setMinDisparity(minD);
     matcher->setMaxDisparity(maxD);
-    // Each event's own disparity against its own speed: a neighbourhood's mean mixes the speeds of its events.
+    // Each event's own disparity against its own speed: a neighbourhood's mean or median mixes the speeds of
+    // its events.
     matcher->setAveragingRadius(0);
+    matcher->setFillRadius(0);
     Mat disparity, flags, flow, confidence;
     matcher->process(merged, disparity, noArray(), flags, noArray(), flow, confidence);
     const Mat_<Event> ev = getEventMat(merged);

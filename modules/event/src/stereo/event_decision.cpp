@@ -141,6 +141,14 @@ void StereoEventMatcherImpl::processAdmitted(const Event& e, Point r, int64 cold
     const float ownDisparity = est.disparity;
     if (ownDisparity >= 0 && params_.averagingRadius > 0)
         est.disparity = averagedDisparity(c, r, e.t, ownDisparity, m.counterpartX);
+    float filled = 0;
+    // An estimate minConfidence rejected stays rejected: the user asked for no disparity rather than a guess.
+    if (!(est.flags & STEREO_AMBIGUOUS) && (est.disparity < 0 || m.confidence < FILL_BELOW_CONFIDENCE) &&
+        filledDisparity(c, r, e.t, s, filled))
+    {
+        est.disparity = filled;
+        est.flags |= STEREO_FILLED;
+    }
     if (est.disparity >= 0)
     {
         est.flags |= STEREO_HAS_DISPARITY;
@@ -163,6 +171,7 @@ void StereoEventMatcherImpl::processAdmitted(const Event& e, Point r, int64 cold
     // descriptors (above) but not the neighbours' estimates that the prior, the left-right check and the
     // border's estimates read.
     estimates_[c].remember(r, e.t, noiseActive ? 0 : activeFor, ownDisparity);
+    rememberConfident(c, r, e.t, noiseActive ? -1.f : ownDisparity, m.confidence);
 }
 
 void StereoEventMatcherImpl::activateUndecided(int c, Point r, int p, int64 t)

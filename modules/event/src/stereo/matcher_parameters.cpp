@@ -70,7 +70,7 @@ void StereoEventMatcherImpl::read(const FileNode& fn)
 int StereoEventMatcherImpl::eventRowReach() const
 {
     return std::max({ params_.aggregationWindow / 2, params_.costWindow / 2, params_.lifetimeWindow / 2, 1,
-                      (int)PRIOR_RADIUS, expiryRowReach(), estimators_[0]->rowReach(), estimators_[1]->rowReach() });
+                      (int)PRIOR_RADIUS, params_.fillRadius, expiryRowReach(), estimators_[0]->rowReach(), estimators_[1]->rowReach() });
 }
 
 }  // namespace detail

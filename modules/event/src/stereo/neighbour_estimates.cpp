@@ -3,7 +3,8 @@
 // of this distribution and at http://opencv.org/license.html.
 
 // What the neighbours' own estimates decide for an event: the temporal prior where the cost has no unique
-// winner, the estimate past the other image's border, the left-right check and the averaged output.
+// winner, the estimate past the other image's border, the left-right check, the averaged output and the
+// filled one.
 
 #include "precomp.hpp"
 #include "stereo/stereo_event_matcher_impl.hpp"
@@ -124,6 +125,27 @@ float StereoEventMatcherImpl::averagedDisparity(int c, Point r, int64 t, float o
                               });
     }
     return (float)(sum / n);
+}
+
+// One camera may not see an edge the other sees (a weaker sensor; an outline against a background that
+// differs between the views): its events there have no counterpart and match something else or nothing.
+// The confident estimates of the surface around them, over the last FILL_TIME, say where they are. Only
+// the events' own estimates support it, never filled ones, so that a fill does not spread by itself.
+bool StereoEventMatcherImpl::filledDisparity(int c, Point r, int64 t, MatchScratch& s, float& disparity) const
+{
+    const int radius = params_.fillRadius;
+    float median = 0;
+    if (radius == 0 || confidentEstimates_[c].median(r, radius, radius, t, s.disparities, median) < (size_t)FILL_SUPPORT ||
+        agreeingShare(s.disparities, median) < FILL_AGREEING)
+        return false;
+    disparity = median;
+    return true;
+}
+
+void StereoEventMatcherImpl::rememberConfident(int c, Point r, int64 t, float disparity, float confidence)
+{
+    if (params_.fillRadius > 0 && disparity >= 0 && confidence >= FILL_SUPPORT_CONFIDENCE)
+        confidentEstimates_[c].remember(r, t, FILL_TIME, disparity);
 }
 
 }  // namespace detail

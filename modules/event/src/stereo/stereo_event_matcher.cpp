@@ -87,6 +87,7 @@ void StereoEventMatcherImpl::reset()
         maps_[c].configure(params_.sensorSize, params_.descriptorWindow, params_.maxVectorLength, margin);
         estimators_[c]->reset();
         estimates_[c].reset(params_.sensorSize);
+        confidentEstimates_[c].reset(params_.sensorSize);
         pendingEvents_[c].assign((size_t)params_.sensorSize.area() * 2, 0);
     }
     input_.restart();

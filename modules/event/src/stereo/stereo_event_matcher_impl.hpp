@@ -126,6 +126,8 @@ public:
     void setRecencyTime(double us) CV_OVERRIDE { params_.setRecencyTime(us); }
     int getAveragingRadius() const CV_OVERRIDE { return params_.averagingRadius; }
     void setAveragingRadius(int px) CV_OVERRIDE { params_.setAveragingRadius(px); }
+    int getFillRadius() const CV_OVERRIDE { return params_.fillRadius; }
+    void setFillRadius(int px) CV_OVERRIDE { params_.setFillRadius(px); }
     double getLookAhead() const CV_OVERRIDE { return (double)params_.lookAhead; }
     void setLookAhead(double us) CV_OVERRIDE { params_.setLookAhead(us); }
     double getFixedInterval() const CV_OVERRIDE { return (double)params_.fixedInterval; }
@@ -277,6 +279,17 @@ private:
     float averagedDisparity(int c, Point r, int64 t, float own, int counterpartX) const;
     static constexpr float AVERAGING_TOLERANCE = 1.5f;
 
+    // Filling (setFillRadius): for an event of sensor c at r whose own estimate is missing or less confident
+    // than FILL_BELOW_CONFIDENCE, the median of the confident estimates (rememberConfident) active at t within
+    // the fill radius, when there are FILL_SUPPORT of them and FILL_AGREEING of them lie within a pixel of it;
+    // false otherwise.
+    bool filledDisparity(int c, Point r, int64 t, MatchScratch& s, float& disparity) const;
+    // Keeps an event's own estimate for filling when it is at least FILL_SUPPORT_CONFIDENCE confident.
+    void rememberConfident(int c, Point r, int64 t, float disparity, float confidence);
+    static constexpr float FILL_BELOW_CONFIDENCE = 0.2f, FILL_SUPPORT_CONFIDENCE = 0.3f, FILL_AGREEING = 0.5f;
+    static constexpr int64 FILL_TIME = 60000;  // us: how long a confident estimate supports filling
+    enum { FILL_SUPPORT = 10 };
+
     // ---- the matched lifetime (matched_lifetime.cpp)
     // Median lifetime (and the flow of that event) of the active events of polarity p in the lifetime window
     // around (x, y) of sensor c. False when none has a lifetime.
@@ -322,6 +335,7 @@ private:
     Ptr<RowBandLifetimeEstimator> estimators_[2];
     ZouDescriptorMap maps_[2];
     ActiveEstimateMap estimates_[2];  // each event's own estimate, as its neighbours read it
+    ActiveEstimateMap confidentEstimates_[2];  // the confident ones among them, for filling
     int64 coldStartEnd_ = 0;  // the end of the cold start: see admit()
     // The cost kernel for this CPU (candidates' costs and window masses), fetched once.
     DescriptorRectSadBatchFn rectSadBatch_ = descriptorRectSadBatchFunction();

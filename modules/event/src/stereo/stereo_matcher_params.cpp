@@ -169,6 +169,14 @@ void StereoMatcherParams::setAveragingRadius(int px)
     averagingRadius = px;
 }
 
+void StereoMatcherParams::setFillRadius(int px)
+{
+    if (px < 0 || px > (int)MAX_FILL_RADIUS)
+        CV_Error_(Error::StsBadArg, ("StereoEventMatcher: fill radius %d px; must be 0..%d px (0: no filling)", px,
+                                     (int)MAX_FILL_RADIUS));
+    fillRadius = px;
+}
+
 void StereoMatcherParams::setLookAhead(double us)
 {
     lookAhead = upToOneSecond(us, "look-ahead", "each event is decided when it arrives");
@@ -213,7 +221,7 @@ void StereoMatcherParams::write(FileStorage& fs) const
        << "minConfidence" << minConfidence << "matchedLifetimeConfidence" << matchedLifetimeConfidence
        << "lifetimeCopyConfidence" << lifetimeCopyConfidence << "maxLifetimeCopies" << maxLifetimeCopies
        << "priorTolerance" << priorTolerance << "recencyWeight" << recencyWeight << "recencyTime" << (double)recencyTime
-       << "averagingRadius" << averagingRadius << "lookAhead" << (double)lookAhead << "fixedInterval" << (double)fixedInterval
+       << "averagingRadius" << averagingRadius << "fillRadius" << fillRadius << "lookAhead" << (double)lookAhead << "fixedInterval" << (double)fixedInterval
        << "maxLifetime" << (double)maxLifetime << "activeDistance"
        << activeDistance << "noiseActiveTime" << (double)noiseActiveTime;
 }
@@ -246,6 +254,7 @@ void StereoMatcherParams::read(const FileNode& fn)
     setRecencyWeight((int)num("recencyWeight", recencyWeight));
     setRecencyTime(num("recencyTime", (double)recencyTime));
     setAveragingRadius((int)num("averagingRadius", averagingRadius));
+    setFillRadius((int)num("fillRadius", fillRadius));
     setLookAhead(num("lookAhead", (double)lookAhead));
     setFixedInterval(num("fixedInterval", (double)fixedInterval));
     setMaxLifetime(num("maxLifetime", (double)maxLifetime));

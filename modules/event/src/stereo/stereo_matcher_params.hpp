@@ -33,6 +33,7 @@ struct StereoMatcherParams
     int priorTolerance = 30;  // %
     int recencyWeight = 15;   // %
     int averagingRadius = 4;
+    int fillRadius = 0;
     // Times in microseconds.
     int64 recencyTime = 10000, lookAhead = 10000, fixedInterval = 10000, maxLifetime = 100000, noiseActiveTime = 25000;
     double activeDistance = 2.5;
@@ -40,6 +41,8 @@ struct StereoMatcherParams
 
     /** The widest averaging radius: the temporal prior's, whose rows an event's processing already reaches. */
     enum { MAX_AVERAGING_RADIUS = 5 };
+    /** The widest filling radius: the temporal prior's reach along a horizontal edge. */
+    enum { MAX_FILL_RADIUS = 30 };
 
     void setMode(int m);
     void setSensorSize(Size s);
@@ -60,6 +63,7 @@ struct StereoMatcherParams
     void setRecencyWeight(int percent);
     void setRecencyTime(double us);
     void setAveragingRadius(int px);
+    void setFillRadius(int px);
     void setLookAhead(double us);
     void setFixedInterval(double us);
     void setMaxLifetime(double us);

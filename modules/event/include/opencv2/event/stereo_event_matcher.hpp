@@ -36,7 +36,10 @@ enum StereoEventFlags
     /** the estimates around the event put its counterpart past the other sensor's border, where the other
     camera does not see it (e.g. a near object in the left image's first columns): the disparity is their
     median, not a match (doc/stereo.md, "The method") */
-    STEREO_BEYOND_VIEW = 256
+    STEREO_BEYOND_VIEW = 256,
+    /** the event's own estimate was missing or barely confident: the disparity is the median of the confident
+    estimates around it (StereoEventMatcher::setFillRadius(); doc/stereo.md, "The method") */
+    STEREO_FILLED = 512
 };
 
 /** @brief Everything StereoEventMatcher estimates for one event. */
@@ -219,6 +222,16 @@ public:
     averaged with (default 4; 0..5; 0: no averaging, the method as published). See doc/stereo.md, "The method". */
     CV_WRAP virtual int getAveragingRadius() const = 0;
     CV_WRAP virtual void setAveragingRadius(int px) = 0;
+    /** @brief Filling: an event whose own estimate is missing or less confident than 0.2 takes the median of
+    the estimates of at least 0.3 confidence that its sensor's events gave within this radius [px] (rows and
+    columns) in the last 60 ms, when there are at least 10 and half of them lie within 1 px of their median
+    (flag STEREO_FILLED; an estimate getMinConfidence() rejected stays rejected; 0..30; default 0: no
+    filling, the method as published; 20 is what doc/stereo.md measures). Where one camera does not
+    see an edge that the other sees (a weaker sensor, the background behind an outline that differs between
+    the views), the event has no counterpart to match, and the surface around it says where it is. See
+    doc/stereo.md, "The method". */
+    CV_WRAP virtual int getFillRadius() const = 0;
+    CV_WRAP virtual void setFillRadius(int px) = 0;
     /** @brief Look-ahead L [us] (COUPLED, DECOUPLED, FIXED_INTERVAL; default 10000; 0..1e6). process() puts
     each event into its sensor's map when it arrives, but matches it (and gives it its lifetime) only once an
     event more than L later has arrived, or at the end of the packet: a counterpart that fires up to L later

@@ -1,0 +1,79 @@
+// This file is part of OpenCV project.
+// It is subject to the license terms in the LICENSE file found in the top-level directory
+// of this distribution and at http://opencv.org/license.html.
+
+#include "test_precomp.hpp"
+#include "test_stereo_scene_runs.hpp"
+
+namespace opencv_test { namespace {
+
+SceneRun runFilled(const std::string& scene, double ms, int radius)
+{
+    return runScene(scene, ms, [radius](StereoEventMatcher& m) { m.setFillRadius(radius); });
+}
+
+// Only the events' own estimates support a fill, so a run with filling makes the same decisions as one
+// without: an event it fills had no disparity or one of confidence below 0.2, and it differs only in its
+// output disparity and the flags that say so.
+TEST(StereoEventMatcher_Filling, changes_only_the_output_of_the_events_it_flags)
+{
+    const SceneRun own = runFilled("boxes_pair", 400, 0);
+    const SceneRun filled = runFilled("boxes_pair", 400, 20);
+    ASSERT_EQ(own.disparity.size(), filled.disparity.size());
+    int64 fills = 0;
+    for (size_t i = 0; i < own.disparity.size(); i++)
+    {
+        ASSERT_EQ(own.lifetime[i], filled.lifetime[i]) << "event " << i;
+        ASSERT_EQ(own.confidence[i], filled.confidence[i]) << "event " << i;
+        if (!(filled.flags[i] & STEREO_FILLED))
+        {
+            ASSERT_EQ(own.flags[i], filled.flags[i]) << "event " << i;
+            ASSERT_EQ(own.disparity[i], filled.disparity[i]) << "event " << i;
+            continue;
+        }
+        fills++;
+        ASSERT_TRUE(own.disparity[i] < 0 || own.confidence[i] < 0.2f) << "event " << i;
+        ASSERT_EQ(own.flags[i] | STEREO_HAS_DISPARITY | STEREO_FILLED, filled.flags[i]) << "event " << i;
+        ASSERT_GE(filled.disparity[i], 0) << "event " << i;
+    }
+    EXPECT_GT(fills, 0);
+}
+
+// walking_pair's figure is seen against other parts of the wall by the two cameras, and its right camera
+// fires 0.6 times the left one's events: much of the outline fires in one camera only. Its events there
+// match something else or nothing; the surface around them, matched where both cameras see it, puts them
+// within a pixel of the simulator's truth far more often.
+TEST(StereoEventMatcher_Filling, puts_the_events_one_camera_misses_where_the_surface_around_them_is)
+{
+    const SceneRun own = runFilled("walking_pair", 1500, 0);
+    const SceneRun filled = runFilled("walking_pair", 1500, 20);
+    ASSERT_EQ(own.disparity.size(), filled.disparity.size());
+    int64 fills = 0, rightBefore = 0, rightAfter = 0;
+    for (size_t i = 0; i < own.disparity.size(); i++)
+        if (isLeftSignal(filled, i) && (filled.flags[i] & STEREO_FILLED))
+        {
+            fills++;
+            rightBefore += matchedWithin1(own, i);
+            rightAfter += matchedWithin1(filled, i);
+        }
+    ASSERT_GT(fills, 1000);
+    EXPECT_GT(rightAfter, fills * 85 / 100) << "the filled events are mostly within a pixel of the truth";
+    EXPECT_GT(rightAfter - rightBefore, fills * 30 / 100) << "far more often than their own estimates were";
+    EXPECT_GE(matchingRate(filled), matchingRate(own) + 10);
+}
+
+TEST(StereoEventMatcher_Filling, radius_is_checked_and_stored)
+{
+    Ptr<StereoEventMatcher> m = StereoEventMatcher::create();
+    EXPECT_EQ(m->getFillRadius(), 0);
+    EXPECT_THROW(m->setFillRadius(-1), cv::Exception);
+    EXPECT_THROW(m->setFillRadius(31), cv::Exception);
+    m->setFillRadius(20);
+    FileStorage out(".yml", FileStorage::WRITE | FileStorage::MEMORY);
+    m->write(out);
+    Ptr<StereoEventMatcher> b = StereoEventMatcher::create();
+    b->read(FileStorage(out.releaseAndGetString(), FileStorage::READ | FileStorage::MEMORY).root());
+    EXPECT_EQ(b->getFillRadius(), 20);
+}
+
+}}  // namespace
