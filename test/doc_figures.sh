@@ -61,8 +61,9 @@ expectPlain() { if sed 's/[*][*]//g' "$repo/$1" | grep -F -- "$2" > /dev/null; t
 "$samples/event_info" --stats --scene=boxes_pair,boxes_fast_pair,walking_pair --duration-ms=3000 > "$work/pairs.txt" &
 "$build/perf/design_figures" > "$work/design.txt" &
 for scene in boxes_pair boxes_fast_pair walking_pair; do
-  stereo "$scene.own" --scene=$scene --duration-ms=3000 --set=averagingRadius=0 --right-time-offset-ms=0 &
-  stereo "$scene.averaged" --scene=$scene --duration-ms=3000 --right-time-offset-ms=0 &
+  stereo "$scene.own" --scene=$scene --duration-ms=3000 --set=averagingRadius=0,fillRadius=0 --right-time-offset-ms=0 &
+  stereo "$scene.averaged" --scene=$scene --duration-ms=3000 --set=fillRadius=0 --right-time-offset-ms=0 &
+  stereo "$scene.clock" --scene=$scene --duration-ms=3000 --set=fillRadius=0 &
   stereo "$scene" --scene=$scene --duration-ms=3000 &
 done
 wait
@@ -71,18 +72,20 @@ while IFS= read -r line; do
 done < <(grep '^| scene ' "$work/pairs.txt" | awk -F' [|] ' '{
   sub(/^[|] scene /, "", $1); sub(/ .*/, "", $1); split($7, interval, " / "); iso = $8; sub(/ %/, "", iso)
   printf "| `%s` | %s | %s | %s | %s | %s | %.1f / %.0f | %.0f %% | %s\n", $1, $2, $3, $4, $5, $6, interval[1], interval[2], iso, $9 }')
-# How they match: each event's own estimate with the clocks as recorded, the averaging, then the defaults
-# (the clock estimate) with their density, as simulator.md's and stereo.md's tables give them.
+# How they match: each event's own estimate with the clocks as recorded, the averaging, the clock estimate,
+# then the defaults (the filling) with their density, as simulator.md's and stereo.md's tables give them.
 rate() { decimal "$(row "$1" "ground truth: matching rate" | awk '{ print $1 }')"; }
 for scene in boxes_pair boxes_fast_pair walking_pair; do
   own=$(rate "$work/$scene.own/summary.md")
   misses=$(row "$work/$scene.own/summary.md" "ground truth: left signal events 1-2 px off")
   averaged=$(rate "$work/$scene.averaged/summary.md")
+  clocked=$(rate "$work/$scene.clock/summary.md")
   defaults=$(rate "$work/$scene/summary.md")
   clock=$(row "$work/$scene/summary.md" "right camera's clock" | sed -n 's/^\([-+0-9.]*\) ms +- \([0-9.inf]*\) ms (estimateClockOffset[^)]*): \(applied\|not applied\).*/\1 +- \2 ms, \3/p')
   density=$(decimal "$(row "$work/$scene/summary.md" "ground truth: density" | awk '{ print $1 }')")
-  expect doc/simulator.md "| \`$scene\` | $own % | $misses | $averaged % |" "event_stereo --scene=$scene --duration-ms=3000 --no-csv, with --set=averagingRadius=0 --right-time-offset-ms=0 (matching rate, near misses), then --right-time-offset-ms=0"
-  expectPlain doc/simulator.md "| \`$scene\` | $own % | $misses | $averaged % | $defaults % (density $density %) |" "the same at the defaults"
+  expectPlain doc/simulator.md "| \`$scene\` | $own % | $misses | $averaged % | $clocked % | $defaults % (density $density %) |" \
+    "event_stereo --scene=$scene --duration-ms=3000 --no-csv: --set=averagingRadius=0,fillRadius=0 --right-time-offset-ms=0 (matching rate, near misses), --set=fillRadius=0 --right-time-offset-ms=0, --set=fillRadius=0, defaults"
+  expect doc/stereo.md "| \`$scene\` | $clocked % | $defaults % |" "the same: --set=fillRadius=0, defaults (stereo.md's filling table)"
   expectPlain doc/stereo.md "| $clock |" "event_stereo --scene=$scene --duration-ms=3000 --no-csv: clock estimate"
 done
 

@@ -7,9 +7,13 @@
 
 namespace opencv_test { namespace {
 
+// Without the filling, which replaces estimates by their surface's median after the averaging.
 SceneRun runAveraged(const std::string& scene, double ms, int radius)
 {
-    return runScene(scene, ms, [radius](StereoEventMatcher& m) { m.setAveragingRadius(radius); });
+    return runScene(scene, ms, [radius](StereoEventMatcher& m) {
+        m.setAveragingRadius(radius);
+        m.setFillRadius(0);
+    });
 }
 
 // The neighbours read each event's own estimate, never the averaged one, so a run with averaging makes the

@@ -136,11 +136,16 @@ static int64 wrongBelow(const SceneRun& r, double below)
 TEST(StereoEventMatcher_Confidence, an_uncertain_match_does_not_override_the_events_own_plane)
 {
     const double copyFrom = 0.3, noiseBelow = 0.15;
+    // Each event's own match: the filling would replace the uncertain estimates counted here.
     const SceneRun own = runScene("boxes_fast", 1000, [&](StereoEventMatcher& m) {
         EXPECT_EQ(m.getLifetimeCopyConfidence(), copyFrom);
         EXPECT_EQ(m.getMatchedLifetimeConfidence(), noiseBelow);
+        m.setFillRadius(0);
     });
-    const SceneRun copied = runScene("boxes_fast", 1000, [](StereoEventMatcher& m) { m.setLifetimeCopyConfidence(0); });
+    const SceneRun copied = runScene("boxes_fast", 1000, [](StereoEventMatcher& m) {
+        m.setLifetimeCopyConfidence(0);
+        m.setFillRadius(0);
+    });
     int64 ownPlanes = 0, copiedLifetimes = 0;
     for (size_t i = 0; i < own.flags.size(); i++)
     {

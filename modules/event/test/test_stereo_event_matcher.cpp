@@ -35,10 +35,13 @@ struct Accuracy
 // Runs a stereo method (a StereoMatchMode or FRAME_BASELINE) on `ms` of a simulated scene; accuracy over non-occluded signal events (with borderBand > 0:
 // only those within borderBand px of the outer border, the right one of the left image and the left one of the
 // right image, where the scene seen by one sensor leaves the other's view).
-Accuracy simulate(const std::string& scene, int mode, double ms, int borderBand = 0)
+Accuracy simulate(const std::string& scene, int mode, double ms, int borderBand = 0,
+                  const std::function<void(StereoEventMatcher&)>& configure = nullptr)
 {
     Ptr<StereoEventSimulator> sim = StereoEventSimulator::create(scene);
     StereoMethod m(sim->getSensorSize(), mode);
+    if (configure)
+        configure(*m.matcher);
     m.setCalibration(StereoCalibration::fromRectified(sim->getSensorSize(), sim->getSettings().focalLength,
                                                       sim->getSettings().baseline));
     Accuracy a;
@@ -158,6 +161,7 @@ TEST(StereoEventMatcher, subpixel_disparities_are_not_pulled_towards_whole_pixel
         Mat gt, estimates;
         sim->generate(300000, ev, gt);
         Ptr<StereoEventMatcher> m = StereoEventMatcher::create(settings.resolution, STEREO_COUPLED);
+        m->setFillRadius(0);  // the sub-pixel fit's estimates, not their surface's median
         m->process(ev, estimates);
         double sum = 0;
         int n = 0;
@@ -214,7 +218,8 @@ TEST(StereoEventMatcher, events_at_the_outer_border_keep_their_disparity)
 // What users do today (frames + SGBM), on the three textured scenes: COUPLED estimates more events (higher
 // density), gets more of all non-occluded events right (within 1 px; by at least 5 points on the
 // fronto-parallel plane and the occlusion scene, where SGBM's frames lose most), and at SGBM's density its
-// most confident estimates are as precise as SGBM's: the share within 1 px no more than 0.15 points below.
+// most confident estimates are as precise as SGBM's: the share within 1 px no more than 0.15 points below
+// (its own matches ranked by their confidence: a filled event keeps its own match's confidence).
 // Every event keeps its best estimate by default, so all of COUPLED's estimates together are less precise
 // than SGBM's fewer ones (264 ms, within 1 px of all estimates: two_planes 98.5 % against 99.2 %, cluttered
 // 95.4 % against 96.8 %); the confidence picks the precise ones (at SGBM's density: 99.9 and 97.9 %).
@@ -230,7 +235,8 @@ TEST(StereoEventMatcher, coupled_beats_frame_sgbm_on_textured_scenes)
         EXPECT_GE(coupled.density, sgbm.density) << s.scene;
         EXPECT_GE(coupled.density * coupled.within1 / 100, sgbm.density * sgbm.within1 / 100 + s.morePointsRight)
             << s.scene;
-        const double atSgbmDensity = coupled.scores.precisionAtDensity(sgbm.density);
+        const Accuracy ownMatches = simulate(s.scene, STEREO_COUPLED, 264, 0, [](StereoEventMatcher& m) { m.setFillRadius(0); });
+        const double atSgbmDensity = ownMatches.scores.precisionAtDensity(sgbm.density);
         EXPECT_GE(atSgbmDensity, sgbm.within1 - 0.15) << s.scene;
     }
 }
@@ -759,6 +765,7 @@ TEST(StereoEventMatcher, events_without_a_lifetime_stay_in_the_descriptors_for_t
     {
         Ptr<StereoEventMatcher> m = StereoEventMatcher::create(size, STEREO_COUPLED);
         m->setNoiseActiveTime(activeUs);
+        m->setFillRadius(0);  // what the events themselves match: the edge above would fill them
         StereoEventEstimate s, middle[2];
         for (const Event& e : ev)
         {

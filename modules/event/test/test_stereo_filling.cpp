@@ -13,8 +13,8 @@ SceneRun runFilled(const std::string& scene, double ms, int radius)
 }
 
 // Only the events' own estimates support a fill, so a run with filling makes the same decisions as one
-// without: an event it fills had no disparity or one of confidence below 0.2, and it differs only in its
-// output disparity and the flags that say so.
+// without: an event it fills had no disparity, one of confidence below 0.15, one within 0.5 px of the fill or
+// one more than 1 px from it, and it differs only in its output disparity and the flags that say so.
 TEST(StereoEventMatcher_Filling, changes_only_the_output_of_the_events_it_flags)
 {
     const SceneRun own = runFilled("boxes_pair", 400, 0);
@@ -32,7 +32,9 @@ TEST(StereoEventMatcher_Filling, changes_only_the_output_of_the_events_it_flags)
             continue;
         }
         fills++;
-        ASSERT_TRUE(own.disparity[i] < 0 || own.confidence[i] < 0.2f) << "event " << i;
+        const float moved = std::abs(filled.disparity[i] - own.disparity[i]);
+        ASSERT_TRUE(own.disparity[i] < 0 || own.confidence[i] < 0.15f || moved <= 0.5f + 1e-4f || moved > 1.f - 1e-4f)
+            << "event " << i;
         ASSERT_EQ(own.flags[i] | STEREO_HAS_DISPARITY | STEREO_FILLED, filled.flags[i]) << "event " << i;
         ASSERT_GE(filled.disparity[i], 0) << "event " << i;
     }
@@ -41,8 +43,9 @@ TEST(StereoEventMatcher_Filling, changes_only_the_output_of_the_events_it_flags)
 
 // walking_pair's figure is seen against other parts of the wall by the two cameras, and its right camera
 // fires 0.6 times the left one's events: much of the outline fires in one camera only. Its events there
-// match something else or nothing; the surface around them, matched where both cameras see it, puts them
-// within a pixel of the simulator's truth far more often.
+// match something else, nothing, or a neighbouring edge a pixel or two off; the surface around them, matched
+// where both cameras see it, puts them within a pixel of the simulator's truth far more often. Counted: the
+// events whose estimate the filling moved by more than half a pixel or gave one.
 TEST(StereoEventMatcher_Filling, puts_the_events_one_camera_misses_where_the_surface_around_them_is)
 {
     const SceneRun own = runFilled("walking_pair", 1500, 0);
@@ -50,7 +53,8 @@ TEST(StereoEventMatcher_Filling, puts_the_events_one_camera_misses_where_the_sur
     ASSERT_EQ(own.disparity.size(), filled.disparity.size());
     int64 fills = 0, rightBefore = 0, rightAfter = 0;
     for (size_t i = 0; i < own.disparity.size(); i++)
-        if (isLeftSignal(filled, i) && (filled.flags[i] & STEREO_FILLED))
+        if (isLeftSignal(filled, i) && (filled.flags[i] & STEREO_FILLED) &&
+            (own.disparity[i] < 0 || std::abs(filled.disparity[i] - own.disparity[i]) > 0.5f))
         {
             fills++;
             rightBefore += matchedWithin1(own, i);
@@ -65,15 +69,15 @@ TEST(StereoEventMatcher_Filling, puts_the_events_one_camera_misses_where_the_sur
 TEST(StereoEventMatcher_Filling, radius_is_checked_and_stored)
 {
     Ptr<StereoEventMatcher> m = StereoEventMatcher::create();
-    EXPECT_EQ(m->getFillRadius(), 0);
+    EXPECT_EQ(m->getFillRadius(), 20);
     EXPECT_THROW(m->setFillRadius(-1), cv::Exception);
     EXPECT_THROW(m->setFillRadius(31), cv::Exception);
-    m->setFillRadius(20);
+    m->setFillRadius(7);
     FileStorage out(".yml", FileStorage::WRITE | FileStorage::MEMORY);
     m->write(out);
     Ptr<StereoEventMatcher> b = StereoEventMatcher::create();
     b->read(FileStorage(out.releaseAndGetString(), FileStorage::READ | FileStorage::MEMORY).root());
-    EXPECT_EQ(b->getFillRadius(), 20);
+    EXPECT_EQ(b->getFillRadius(), 7);
 }
 
 }}  // namespace

@@ -50,6 +50,20 @@ size_t ActiveEstimateMap::median(Point centre, int rows, int columns, int64 t, s
     return disparities.size();
 }
 
+size_t ActiveEstimateMap::sampledMedian(Point centre, int rows, int columns, int rowStep, int64 t,
+                                        std::vector<float>& disparities, float& median) const
+{
+    disparities.clear();
+    for (int y = centre.y - rows; y <= centre.y + rows; y += rowStep)
+        forEachActive(centre.x - columns, centre.x + columns, y, y, t, [&disparities](float d) { disparities.push_back(d); });
+    if (disparities.empty())
+        return 0;
+    const size_t mid = disparities.size() / 2;
+    std::nth_element(disparities.begin(), disparities.begin() + (std::ptrdiff_t)mid, disparities.end());
+    median = disparities[mid];
+    return disparities.size();
+}
+
 bool ActiveEstimateMap::shownAt(int x, int y, double t, float& disparity) const
 {
     const size_t i = (size_t)y * size_.width + x;

@@ -61,6 +61,11 @@ public:
     // (into `disparities`, in no particular order), their count and, when there are any, their median.
     size_t median(Point centre, int rows, int columns, int64 t, std::vector<float>& disparities, float& median) const;
 
+    // As median(), over every `rowStep`-th row of the window from its first: a tall window's median from a
+    // fraction of its estimates.
+    size_t sampledMedian(Point centre, int rows, int columns, int rowStep, int64 t, std::vector<float>& disparities,
+                         float& median) const;
+
     // The estimate shown at time t at pixel (x, y): that of the pixel's last event at or before t, while active.
     bool shownAt(int x, int y, double t, float& disparity) const;
 

@@ -142,9 +142,10 @@ void StereoEventMatcherImpl::processAdmitted(const Event& e, Point r, int64 cold
     if (ownDisparity >= 0 && params_.averagingRadius > 0)
         est.disparity = averagedDisparity(c, r, e.t, ownDisparity, m.counterpartX);
     float filled = 0;
-    // An estimate minConfidence rejected stays rejected: the user asked for no disparity rather than a guess.
-    if (!(est.flags & STEREO_AMBIGUOUS) && (est.disparity < 0 || m.confidence < FILL_BELOW_CONFIDENCE) &&
-        filledDisparity(c, r, e.t, s, filled))
+    // Below minConfidence (rejected, or without a candidate) an event gets no disparity, filled or not: the
+    // user asked for none rather than a guess.
+    if (!(est.flags & STEREO_AMBIGUOUS) && m.confidence >= params_.minConfidence &&
+        filledDisparity(c, r, e.t, s, est.disparity, m.confidence, filled))
     {
         est.disparity = filled;
         est.flags |= STEREO_FILLED;

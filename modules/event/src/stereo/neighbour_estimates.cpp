@@ -128,16 +128,35 @@ float StereoEventMatcherImpl::averagedDisparity(int c, Point r, int64 t, float o
 }
 
 // One camera may not see an edge the other sees (a weaker sensor; an outline against a background that
-// differs between the views): its events there have no counterpart and match something else or nothing.
-// The confident estimates of the surface around them, over the last FILL_TIME, say where they are. Only
-// the events' own estimates support it, never filled ones, so that a fill does not spread by itself.
-bool StereoEventMatcherImpl::filledDisparity(int c, Point r, int64 t, MatchScratch& s, float& disparity) const
+// differs between the views): its events there have no counterpart and match something else, nothing, or a
+// neighbouring edge a pixel or two off. The confident estimates of the surface around them, over the last
+// FILL_TIME, say where they are. Only the events' own estimates support it, never filled ones, so that a fill
+// does not spread by itself.
+bool StereoEventMatcherImpl::filledDisparity(int c, Point r, int64 t, MatchScratch& s, float own, float confidence,
+                                             float& disparity) const
 {
     const int radius = params_.fillRadius;
     float median = 0;
-    if (radius == 0 || confidentEstimates_[c].median(r, radius, radius, t, s.disparities, median) < (size_t)FILL_SUPPORT ||
-        agreeingShare(s.disparities, median) < FILL_AGREEING)
+    // Every other row: an edge's estimates repeat from row to row, and the window's scan is what filling costs.
+    if (radius == 0 ||
+        confidentEstimates_[c].sampledMedian(r, radius, radius, FILL_ROW_STEP, t, s.disparities, median) < (size_t)FILL_SUPPORT)
         return false;
+    const float agreeing = agreeingShare(s.disparities, median);
+    if (agreeing < FILL_AGREEING)
+        return false;
+    const float gap = std::abs(own - median);
+    if (own >= 0 && confidence >= FILL_BELOW_CONFIDENCE && gap > FILL_REFINE_GAP)
+    {
+        // Apart from the surface: replaced only where the surface is clearly one (most of it within a pixel),
+        // and kept where the events of a narrow band around it agree with it (a pole, a limb in front of the
+        // body).
+        if (gap <= FILL_OUTLIER_GAP || agreeing < FILL_OUTLIER_AGREEING)
+            return false;
+        float narrow = 0;
+        if (confidentEstimates_[c].median(r, radius, FILL_NARROW_COLUMNS, t, s.disparities, narrow) >= (size_t)FILL_NARROW_SUPPORT &&
+            std::abs(narrow - own) <= 1.f)
+            return false;
+    }
     disparity = median;
     return true;
 }

@@ -279,16 +279,21 @@ private:
     float averagedDisparity(int c, Point r, int64 t, float own, int counterpartX) const;
     static constexpr float AVERAGING_TOLERANCE = 1.5f;
 
-    // Filling (setFillRadius): for an event of sensor c at r whose own estimate is missing or less confident
-    // than FILL_BELOW_CONFIDENCE, the median of the confident estimates (rememberConfident) active at t within
-    // the fill radius, when there are FILL_SUPPORT of them and FILL_AGREEING of them lie within a pixel of it;
-    // false otherwise.
-    bool filledDisparity(int c, Point r, int64 t, MatchScratch& s, float& disparity) const;
+    // Filling (setFillRadius): the surface's disparity around an event of sensor c at r, the median of the
+    // confident estimates (rememberConfident) active at t within the fill radius, in every FILL_ROW_STEP-th
+    // row, when there are FILL_SUPPORT of them and FILL_AGREEING of them lie within a pixel of it, replaces
+    // the event's own estimate `own` (-1: none) of confidence `confidence` when the latter is missing or less
+    // confident than FILL_BELOW_CONFIDENCE, lies within FILL_REFINE_GAP of the surface's (a median of many is
+    // the finer estimate), or lies more than FILL_OUTLIER_GAP from it where FILL_OUTLIER_AGREEING of the
+    // surface lie within a pixel of its median and a narrow band of it (FILL_NARROW_COLUMNS either side, all
+    // the rows: a pole, a limb in front of the body) does not support `own`. False: the event keeps `own`.
+    bool filledDisparity(int c, Point r, int64 t, MatchScratch& s, float own, float confidence, float& disparity) const;
     // Keeps an event's own estimate for filling when it is at least FILL_SUPPORT_CONFIDENCE confident.
     void rememberConfident(int c, Point r, int64 t, float disparity, float confidence);
-    static constexpr float FILL_BELOW_CONFIDENCE = 0.2f, FILL_SUPPORT_CONFIDENCE = 0.3f, FILL_AGREEING = 0.5f;
+    static constexpr float FILL_BELOW_CONFIDENCE = 0.15f, FILL_SUPPORT_CONFIDENCE = 0.3f, FILL_AGREEING = 0.5f;
+    static constexpr float FILL_REFINE_GAP = 0.5f, FILL_OUTLIER_GAP = 1.0f, FILL_OUTLIER_AGREEING = 0.8f;
     static constexpr int64 FILL_TIME = 60000;  // us: how long a confident estimate supports filling
-    enum { FILL_SUPPORT = 10 };
+    enum { FILL_SUPPORT = 5, FILL_ROW_STEP = 2, FILL_NARROW_COLUMNS = 3, FILL_NARROW_SUPPORT = 5 };
 
     // ---- the matched lifetime (matched_lifetime.cpp)
     // Median lifetime (and the flow of that event) of the active events of polarity p in the lifetime window

@@ -33,7 +33,7 @@ struct StereoMatcherParams
     int priorTolerance = 30;  // %
     int recencyWeight = 15;   // %
     int averagingRadius = 4;
-    int fillRadius = 0;
+    int fillRadius = 20;
     // Times in microseconds.
     int64 recencyTime = 10000, lookAhead = 10000, fixedInterval = 10000, maxLifetime = 100000, noiseActiveTime = 25000;
     double activeDistance = 2.5;

@@ -37,8 +37,8 @@ enum StereoEventFlags
     camera does not see it (e.g. a near object in the left image's first columns): the disparity is their
     median, not a match (doc/stereo.md, "The method") */
     STEREO_BEYOND_VIEW = 256,
-    /** the event's own estimate was missing or barely confident: the disparity is the median of the confident
-    estimates around it (StereoEventMatcher::setFillRadius(); doc/stereo.md, "The method") */
+    /** the disparity is the median of the confident estimates around the event, not its own estimate
+    (StereoEventMatcher::setFillRadius(); doc/stereo.md, "The method") */
     STEREO_FILLED = 512
 };
 
@@ -222,14 +222,17 @@ public:
     averaged with (default 4; 0..5; 0: no averaging, the method as published). See doc/stereo.md, "The method". */
     CV_WRAP virtual int getAveragingRadius() const = 0;
     CV_WRAP virtual void setAveragingRadius(int px) = 0;
-    /** @brief Filling: an event whose own estimate is missing or less confident than 0.2 takes the median of
-    the estimates of at least 0.3 confidence that its sensor's events gave within this radius [px] (rows and
-    columns) in the last 60 ms, when there are at least 10 and half of them lie within 1 px of their median
-    (flag STEREO_FILLED; an estimate getMinConfidence() rejected stays rejected; 0..30; default 0: no
-    filling, the method as published; 20 is what doc/stereo.md measures). Where one camera does not
-    see an edge that the other sees (a weaker sensor, the background behind an outline that differs between
-    the views), the event has no counterpart to match, and the surface around it says where it is. See
-    doc/stereo.md, "The method". */
+    /** @brief Filling: the radius [px] (rows and columns) of the surface an event's estimate is checked
+    against (default 20; 0..30; 0: no filling, the method as published). The surface's disparity is the median
+    of the estimates of at least 0.3 confidence that the sensor's events gave within the radius, in every other
+    row, in the last 60 ms, when there are at least 5 and half of them lie within 1 px of it. The event takes it (flag
+    STEREO_FILLED) when its own estimate is missing or less confident than 0.15, lies within 0.5 px of it, or
+    lies more than 1 px from it where 80 % of the surface's estimates lie within 1 px of its median and those
+    in the 3 columns either side of the event do not agree with the event's own; an event below
+    getMinConfidence() gets no disparity, filled or not. Where one camera does not see an
+    edge that the other sees (a weaker sensor, the background behind an outline that differs between the
+    views), the event has no counterpart, or matches a neighbouring edge, and the surface around it says
+    where it is. See doc/stereo.md, "The method". */
     CV_WRAP virtual int getFillRadius() const = 0;
     CV_WRAP virtual void setFillRadius(int px) = 0;
     /** @brief Look-ahead L [us] (COUPLED, DECOUPLED, FIXED_INTERVAL; default 10000; 0..1e6). process() puts
