@@ -39,15 +39,7 @@ void ActiveEstimateMap::remember(Point r, int64 t, int64 activeFor, float dispar
 size_t ActiveEstimateMap::median(Point centre, int rows, int columns, int64 t, std::vector<float>& disparities,
                                  float& median) const
 {
-    disparities.clear();
-    forEachActive(centre.x - columns, centre.x + columns, centre.y - rows, centre.y + rows, t,
-                  [&disparities](float d) { disparities.push_back(d); });
-    if (disparities.empty())
-        return 0;
-    const size_t mid = disparities.size() / 2;
-    std::nth_element(disparities.begin(), disparities.begin() + (std::ptrdiff_t)mid, disparities.end());
-    median = disparities[mid];
-    return disparities.size();
+    return sampledMedian(centre, rows, columns, 1, t, disparities, median);
 }
 
 size_t ActiveEstimateMap::sampledMedian(Point centre, int rows, int columns, int rowStep, int64 t,
