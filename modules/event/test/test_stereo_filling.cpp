@@ -45,7 +45,9 @@ TEST(StereoEventMatcher_Filling, changes_only_the_output_of_the_events_it_flags)
 // fires 0.6 times the left one's events: much of the outline fires in one camera only. Its events there
 // match something else, nothing, or a neighbouring edge a pixel or two off; the surface around them, matched
 // where both cameras see it, puts them within a pixel of the simulator's truth far more often. Counted: the
-// events whose estimate the filling moved by more than half a pixel or gave one.
+// events whose estimate the filling moved by more than half a pixel or gave one. The bounds leave room for
+// the builds' spread: a different SIMD baseline rounds differently, and the scene's matches diverge from there
+// (the share within a pixel differs by about 4 points between the standalone and the contrib build).
 TEST(StereoEventMatcher_Filling, puts_the_events_one_camera_misses_where_the_surface_around_them_is)
 {
     const SceneRun own = runFilled("walking_pair", 1500, 0);
@@ -62,7 +64,7 @@ TEST(StereoEventMatcher_Filling, puts_the_events_one_camera_misses_where_the_sur
         }
     ASSERT_GT(fills, 1000);
     EXPECT_GT(rightAfter, fills * 80 / 100) << "the filled events are mostly within a pixel of the truth";
-    EXPECT_GT(rightAfter - rightBefore, fills * 30 / 100) << "far more often than their own estimates were";
+    EXPECT_GT(rightAfter - rightBefore, fills * 50 / 100) << "far more often than their own estimates were";
     EXPECT_GE(matchingRate(filled), matchingRate(own) + 10);
 }
 
