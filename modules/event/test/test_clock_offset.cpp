@@ -33,6 +33,40 @@ TEST(Event_ClockOffset, a_right_clock_moved_by_a_known_amount_moves_the_estimate
     }
 }
 
+TEST(Event_ClockOffset, a_walking_figure_tells_a_moved_clock_and_says_how_sure_it_is_of_its_own)
+{
+    // Limbs that swing: speeds along the rows change on one surface, so a moved clock is told from a
+    // disparity. The matching itself gives a faster edge a slightly larger disparity, whichever way it moves;
+    // the estimate takes that up, and says how far off it may be: within two of its uncertainties of the
+    // clock, or no estimate.
+    const Size size(240, 180);
+    ASSERT_EQ(0, StereoEventSimulator::create("walking")->getSettings().rightClockOffsetUs);
+    double u0 = 0;
+    const double e0 = estimateClockOffset(sceneWithRightClock("walking", 0, 2000000), size, 0, 40, &u0);
+    if (std::isfinite(u0))
+        EXPECT_LE(std::abs(e0), 2 * u0);
+    else
+        EXPECT_EQ(0, e0);
+    for (double clock : { -10000.0, 10000.0 })
+    {
+        double u = 0;
+        const double e = estimateClockOffset(sceneWithRightClock("walking", clock, 2000000), size, 0, 40, &u);
+        ASSERT_TRUE(std::isfinite(u)) << "clock moved by " << clock << " us";
+        EXPECT_LE(std::abs(e + clock), 2 * u) << "clock moved by " << clock << " us";
+    }
+}
+
+TEST(Event_ClockOffset, objects_that_each_move_at_one_speed_give_no_confident_wrong_offset)
+{
+    // Diagonal boxes, each at its own speed and depth: an offset shifts each object's disparities by one
+    // amount, as a depth would. Moved by 10 ms, the slopes that remain come from the matching (edge
+    // directions), and the two cameras' events point to offsets far apart: right, or not sure (an uncertainty
+    // of more than 0.5 ms, as event_stereo takes it).
+    double uncertainty = 0;
+    const double e = estimateClockOffset(sceneWithRightClock("boxes_fast", 10000, 2000000), Size(240, 180), 0, 40, &uncertainty);
+    EXPECT_TRUE(uncertainty > 500 || std::abs(e + 10000) <= 500) << e << " +- " << uncertainty;
+}
+
 TEST(Event_ClockOffset, clocks_that_agree_are_not_given_an_offset_that_blurs_the_matches)
 {
     // Fast diagonal boxes with both clocks alike: the slope of disparity on speed vanishes again 17 ms away,

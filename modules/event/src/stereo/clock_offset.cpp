@@ -28,6 +28,8 @@ const double kConfidenceTolerance = 0.002; // mean confidence an offset may cost
 const double kMaxConfidenceLoss = 0.05;    // share of the mean confidence no clock offset costs
 const double kMinGain = 0.1;               // below, the slope hardly follows the offset: nothing to go by
 const double kClearGain = 0.5;             // from here on the slope follows the offset as a clock would
+const double kMaxCameraDisagreementUs = 500;  // the two cameras' own offsets: further apart (more than the
+                                              // accuracy an offset is held to), no one clock
 
 double clampOffset(double offsetUs)
 {
@@ -83,10 +85,13 @@ struct SlopeFit
     double standardErrorUs = std::numeric_limits<double>::infinity();
     double offsetUs = 0;        // the right camera's restamping it was measured at
     double meanConfidence = 0;  // of the events with a disparity: how clear-cut the matches were
+    // The same fit over each camera's events alone: a clock moves both cameras' disparities alike.
+    double cameraSlopeUs[2] = { 0, 0 };
+    double cameraErrorUs[2] = { std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity() };
 };
 
-// Within-surface least squares of d on (u, w): every surface has its own intercept (its disparity), so only
-// how d changes with u and w on one surface counts.
+// Within-surface least squares of d on (u, w, |u|): every surface has its own intercept (its disparity), so only
+// how d changes with them on one surface counts.
 class SurfaceRegression
 {
 public:
@@ -101,7 +106,7 @@ public:
     {
         SlopeFit result;
         std::vector<char> kept(samples_.size(), 1);
-        Vec2d beta;
+        Vec3d beta;
         for (int pass = 0; pass < 3; pass++)
         {
             if (!solve(kept, beta))
@@ -131,13 +136,13 @@ public:
 private:
     // Fits the kept samples; sets residuals_ and standardError_ (of the u slope, clustered by group, as
     // neighbouring events share their matches).
-    bool solve(const std::vector<char>& kept, Vec2d& beta)
+    bool solve(const std::vector<char>& kept, Vec3d& beta)
     {
         const size_t n = samples_.size();
-        centred_.assign(n, Vec3d(0, 0, 0));
+        centred_.assign(n, Vec4d(0, 0, 0, 0));
         std::vector<char> used(n, 0);
-        Matx22d A = Matx22d::zeros();
-        Vec2d b(0, 0);
+        Matx33d A = Matx33d::zeros();
+        Vec3d b(0, 0, 0);
         for (size_t begin = 0; begin < n;)
         {
             // One surface: the kept samples of a group whose disparities follow each other within the gap.
@@ -156,34 +161,37 @@ private:
             }
             if (surface.size() >= kMinSurfaceEvents)
             {
-                Vec3d mean(0, 0, 0);
+                Vec4d mean(0, 0, 0, 0);
                 for (size_t i : surface)
-                    mean += Vec3d(samples_[i].u, samples_[i].w, samples_[i].d);
+                    mean += regressors(samples_[i]);
                 mean *= 1.0 / (double)surface.size();
                 for (size_t i : surface)
                 {
-                    const Vec3d c = Vec3d(samples_[i].u, samples_[i].w, samples_[i].d) - mean;
+                    const Vec4d c = regressors(samples_[i]) - mean;
                     centred_[i] = c;
                     used[i] = 1;
-                    A(0, 0) += c[0] * c[0];
-                    A(0, 1) += c[0] * c[1];
-                    A(1, 1) += c[1] * c[1];
-                    b[0] += c[0] * c[2];
-                    b[1] += c[1] * c[2];
+                    for (int j = 0; j < 3; j++)
+                    {
+                        for (int k = j; k < 3; k++)
+                            A(j, k) += c[j] * c[k];
+                        b[j] += c[j] * c[3];
+                    }
                 }
             }
             begin = end;
         }
-        A(1, 0) = A(0, 1);
+        for (int j = 0; j < 3; j++)
+            for (int k = 0; k < j; k++)
+                A(j, k) = A(k, j);
         // Vertical edges only: w does not vary and takes nothing up (a tiny ridge keeps the system solvable).
         A(1, 1) += 1e-9 + 1e-9 * A(1, 1);
-        const double det = A(0, 0) * A(1, 1) - A(0, 1) * A(1, 0);
-        if (!(A(0, 0) > 0) || !(det > 1e-12 * A(0, 0) * A(1, 1)))
+        // Edges that all move one way make |u| a copy of u: the slope is then not measurable.
+        if (!(A(0, 0) > 0) || !(determinant(A) > 1e-6 * A(0, 0) * A(1, 1) * A(2, 2)))
             return false;
-        const Matx22d inv = A.inv();
+        const Matx33d inv = A.inv(DECOMP_SVD);
         beta = inv * b;
         residuals_.assign(n, 0.f);
-        std::map<int64, Vec2d> score;  // per group: sum of x e
+        std::map<int64, Vec3d> score;  // per group: sum of x e
         for (size_t i = 0; i < n; i++)
         {
             if (!used[i])
@@ -191,24 +199,29 @@ private:
                 residuals_[i] = std::numeric_limits<float>::infinity();  // not on a surface: trimmed with the outliers
                 continue;
             }
-            const Vec3d& c = centred_[i];
-            const double e = c[2] - beta[0] * c[0] - beta[1] * c[1];
+            const Vec4d& c = centred_[i];
+            const double e = c[3] - beta[0] * c[0] - beta[1] * c[1] - beta[2] * c[2];
             residuals_[i] = (float)e;
-            score[samples_[i].group] += Vec2d(c[0] * e, c[1] * e);
+            score[samples_[i].group] += Vec3d(c[0] * e, c[1] * e, c[2] * e);
         }
         if (score.size() < 5)
             return false;
-        Matx22d meat = Matx22d::zeros();
+        Matx33d meat = Matx33d::zeros();
         for (const auto& kv : score)
             meat += kv.second * kv.second.t();
         const double groups = (double)score.size();
-        const Matx22d V = inv * meat * inv * (groups / (groups - 1));
+        const Matx33d V = inv * meat * inv * (groups / (groups - 1));
         standardError_ = std::sqrt(std::max(0.0, V(0, 0)));
         return true;
     }
 
+    // (u, w, |u|, d). A clock offset moves an edge by u tau, one way for edges moving right and the other way
+    // for edges moving left; what the matching itself does with a faster edge (a thicker trail, a later
+    // counterpart) is the same both ways: |u| takes that up.
+    static Vec4d regressors(const Sample& s) { return Vec4d(s.u, s.w, std::abs(s.u), s.d); }
+
     std::vector<Sample> samples_;
-    std::vector<Vec3d> centred_;  // (u, w, d) less the surface's means
+    std::vector<Vec4d> centred_;  // regressors() less the surface's means
     std::vector<float> residuals_;
     double standardError_ = 0;
 };
@@ -260,7 +273,19 @@ SlopeFit slopeAt(const std::vector<Event>& left, const std::vector<Event>& right
         samples.push_back(Sample{ group, cell, disparity.at<float>(i), (float)u, (float)w });
     }
     smoothSpeeds(samples);
+    std::vector<Sample> cameraSamples[2];
+    for (const Sample& s : samples)
+        cameraSamples[(s.group / ((int64)blocksX * blocksY)) % 2].push_back(s);
     SlopeFit fit = SurfaceRegression(std::move(samples)).fit();
+    for (int c = 0; c < 2; c++)
+    {
+        const SlopeFit one = SurfaceRegression(std::move(cameraSamples[c])).fit();
+        if (one.ok)
+        {
+            fit.cameraSlopeUs[c] = one.slopeUs;
+            fit.cameraErrorUs[c] = one.standardErrorUs;
+        }
+    }
     fit.offsetUs = offsetUs;
     fit.meanConfidence = confidenceSum / std::max(1.0, matched);
     return fit;
@@ -344,8 +369,19 @@ double estimateClockOffset(InputArray events, Size sensorSize, int minDisparity,
         (overallGain < kClearGain && best->meanConfidence < fits[0].meanConfidence - kConfidenceTolerance) ||
         best->meanConfidence < fits[0].meanConfidence * (1 - kMaxConfidenceLoss))
         return 0;
+    // Each camera's events alone point to an offset of their own. A clock gives both the same one; where they
+    // lie further apart than their noise explains, something else makes the slopes as well (the matching's own
+    // response to an edge's direction and speed), in amounts that differ between the cameras: more than
+    // kMaxCameraDisagreementUs apart, the estimate is refused; below, half the gap counts towards its
+    // uncertainty.
+    const double gap = std::abs(best->cameraSlopeUs[0] - best->cameraSlopeUs[1]);
+    const double gapError = std::sqrt(best->cameraErrorUs[0] * best->cameraErrorUs[0] +
+                                      best->cameraErrorUs[1] * best->cameraErrorUs[1]);
+    const double effectiveGain = std::min(overallGain, 1.0);
+    if (std::isfinite(gapError) && gap > 3 * gapError && gap / effectiveGain > kMaxCameraDisagreementUs)
+        return 0;
     if (uncertaintyUs)
-        *uncertaintyUs = best->standardErrorUs / std::min(overallGain, 1.0);
+        *uncertaintyUs = std::max(best->standardErrorUs, std::isfinite(gapError) ? gap / 2 : 0.0) / effectiveGain;
     return best->offsetUs;
 }
 

@@ -119,25 +119,28 @@ STEREO_COUPLED, defaults, each event's own estimate: no averaging); for each cam
 seconds, the confident estimates are cut into surfaces where their disparities are more than a pixel apart,
 and the disparity is regressed on u within
 them (u taken as the median of the block's estimates over 50 ms, as one plane fit's flow is too noisy; a
-second regressor, f_y / f_x, takes up a residual row offset, which moves oblique edges along the row). The
-right camera is restamped by the offset that makes the slope zero (secant steps, within +-20 ms), and the
-events are matched again, up to five times.
+second regressor, f_y / f_x, takes up a residual row offset, which moves oblique edges along the row; a third,
+|u|, what the matching does with faster edges whichever way they move, where a clock moves edges that travel
+left and right in opposite directions). The right camera is restamped by the offset that makes the slope zero
+(secant steps, within +-20 ms), and the events are matched again, up to five times.
 
 An offset can only be told from a disparity where the speed along the rows varies on one surface: objects
 that speed up, slow down or turn, edges of several directions on an object moving with a vertical component,
 rotation. Where one object moves at one speed along the rows, an offset shifts every disparity by one amount,
 exactly as a different depth would, and nothing in the events tells them apart: @p uncertaintyUs is then large
 and the offset should not be applied. The estimate is refused (0, infinite uncertainty) where the slope hardly
-follows the restamping, where it would lie at the +-20 ms end, and where it follows only weakly (less than
+follows the restamping, where it would lie at the +-20 ms end, where it follows only weakly (less than
 half as much as a clock would) and the matches at the estimate are less clear-cut (mean confidence) than with
-the clocks as given.
+the clocks as given, and where each camera's events alone point to offsets more than 0.5 ms apart (a clock
+moves both cameras' disparities alike; what the matching does with edge directions does not).
 @param events stereo events (camera column), time-ordered and rectified, any form getEventMat() accepts; a few
 seconds of a recording with motion is enough (the events are matched up to five times). Events outside the
 sensor are ignored.
 @param sensorSize the sensor size.
 @param minDisparity, maxDisparity the disparity range searched.
 @param uncertaintyUs optional output: the standard error of the offset [us] (clustered by block and ten
-seconds). Above a few hundred us the events hardly tell an offset from a disparity.
+seconds), or half the gap between the two cameras' own offsets where that is larger. Above a few hundred us
+the events hardly tell an offset from a disparity.
 @return the offset [us]; 0 when nothing could be compared or the estimate is refused.
 */
 CV_EXPORTS_W double estimateClockOffset(InputArray events, Size sensorSize, int minDisparity = 0, int maxDisparity = 40,
