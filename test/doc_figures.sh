@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# ctest `doc_figures`: the figures the docs quote for the real recordings, the DAVIS240-pair scenes and the
+# ctest `doc_figures`: the figures the docs quote for the real recordings, the DAVIS240-pair and realistic scenes and the
 # design choices (perf/design_figures)
 # come from today's build. Each documented command runs (on ../shared/data, or on the simulator), the figure
 # is taken from what it prints, formatted as the docs write it, and must appear in the doc that quotes it
@@ -17,6 +17,7 @@ samples=$build/samples
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 failures=0
+declare -A realisticClocked realisticDefaults
 
 # 136233 -> 136,233
 thousands() { printf '%s' "$1" | sed -e ':a' -e 's/\([0-9]\)\([0-9]\{3\}\)\($\|,\)/\1,\2\3/;ta'; }
@@ -39,6 +40,9 @@ failIfAny() {
 # expect DOC TEXT WHAT: the doc must quote TEXT (what the command printed, formatted as the docs write it).
 expect() { if grep -qF -- "$2" "$repo/$1"; then quoted "$@"; else notQuoted "$@"; fi; }
 
+# expectProse DOC TEXT WHAT: as expect, in the doc's running text (a line break counts as a space).
+expectProse() { if tr '\n' ' ' < "$repo/$1" | grep -F -- "$2" > /dev/null; then quoted "$@"; else notQuoted "$@"; fi; }
+
 # A summary.md row's value: the text after "| LABEL ... | ".
 row() { grep -m1 -F "| $2" "$1" | sed -e 's/^[^|]*|[^|]*| //' -e 's/ |$//'; }
 
@@ -60,11 +64,21 @@ expectPlain() { if sed 's/[*][*]//g' "$repo/$1" | grep -F -- "$2" > /dev/null; t
 # The simulations run side by side; a run that fails leaves no figure, and its check fails.
 "$samples/event_info" --stats --scene=boxes_pair,boxes_fast_pair,walking_pair --duration-ms=3000 > "$work/pairs.txt" &
 "$build/perf/design_figures" > "$work/design.txt" &
-for scene in boxes_pair boxes_fast_pair walking_pair; do
+realistic="boxes boxes_fast walking walking_near low_contrast"
+for scene in boxes_pair boxes_fast_pair walking_pair $realistic; do
   stereo "$scene.own" --scene=$scene --duration-ms=3000 --set=averagingRadius=0,fillRadius=0 --right-time-offset-ms=0 &
   stereo "$scene.averaged" --scene=$scene --duration-ms=3000 --set=fillRadius=0 --right-time-offset-ms=0 &
-  stereo "$scene.clock" --scene=$scene --duration-ms=3000 --set=fillRadius=0 &
   stereo "$scene" --scene=$scene --duration-ms=3000 &
+done
+wait
+# With the clock estimated (the defaults' first step): the same run as the averaged one where the estimate is not
+# applied.
+for scene in boxes_pair boxes_fast_pair walking_pair $realistic; do
+  if grep -q "right camera's clock.*: applied" "$work/$scene/summary.md"; then
+    stereo "$scene.clock" --scene=$scene --duration-ms=3000 --set=fillRadius=0 &
+  else
+    ln -s "$work/$scene.averaged" "$work/$scene.clock"
+  fi
 done
 wait
 while IFS= read -r line; do
@@ -88,6 +102,29 @@ for scene in boxes_pair boxes_fast_pair walking_pair; do
   expect doc/stereo.md "| \`$scene\` | $clocked % | $defaults % |" "the same: --set=fillRadius=0, defaults (stereo.md's filling table)"
   expectPlain doc/stereo.md "| $clock |" "event_stereo --scene=$scene --duration-ms=3000 --no-csv: clock estimate"
 done
+refused=""
+# The realistic scenes: the same four rates in one line of simulator.md, the last two in stereo.md's filling table,
+# and what the clock estimate says.
+for scene in $realistic; do
+  own=$(rate "$work/$scene.own/summary.md")
+  averaged=$(rate "$work/$scene.averaged/summary.md")
+  realisticClocked[$scene]=$(rate "$work/$scene.clock/summary.md")
+  realisticDefaults[$scene]=$(rate "$work/$scene/summary.md")
+  expectProse doc/simulator.md "\`$scene\` $own / $averaged / ${realisticClocked[$scene]} / ${realisticDefaults[$scene]} %" \
+    "event_stereo --scene=$scene --duration-ms=3000 --no-csv: the four settings of the pairs' table"
+  clock=$(row "$work/$scene/summary.md" "right camera's clock" | sed -n 's/^\([-+0-9.]*\) ms +- \([0-9.inf]*\) ms (estimateClockOffset[^)]*): \(applied\|not applied\).*/\1 +- \2 ms, \3/p')
+  case "$clock" in
+    "+0.00 +- inf ms, not applied") refused="${refused:+$refused, }\`$scene\`" ;;
+    *", not applied") expectProse doc/stereo.md "on \`$scene\` it finds ${clock%, not applied} and is not applied" "$scene: the clock estimate" ;;
+    *) notQuoted doc/stereo.md "$clock" "$scene: a clock estimate applied on a scene whose clocks agree" ;;
+  esac
+done
+expectProse doc/stereo.md "On the realistic scenes ($refused), whose clocks agree" "the realistic scenes whose clock estimate is refused"
+c=(); d=()
+for scene in $realistic; do c+=("${realisticClocked[$scene]}"); d+=("${realisticDefaults[$scene]}"); done
+expect doc/stereo.md "| \`boxes\` / \`boxes_fast\` / \`walking\` | ${c[0]} / ${c[1]} / ${c[2]} % | ${d[0]} / ${d[1]} / ${d[2]} % |" \
+  "the realistic scenes: --set=fillRadius=0, defaults (stereo.md's filling table)"
+expect doc/stereo.md "| \`walking_near\` / \`low_contrast\` | ${c[3]} / ${c[4]} % | ${d[3]} / ${d[4]} % |" "the same"
 
 # The design choices' figures (perf/design_figures), as doc/benchmarks.md, doc/stereo.md and doc/lifetime.md
 # quote them.

@@ -28,8 +28,6 @@ const double kConfidenceTolerance = 0.002; // mean confidence an offset may cost
 const double kMaxConfidenceLoss = 0.05;    // share of the mean confidence no clock offset costs
 const double kMinGain = 0.1;               // below, the slope hardly follows the offset: nothing to go by
 const double kClearGain = 0.5;             // from here on the slope follows the offset as a clock would
-const double kMaxCameraDisagreementUs = 500;  // the two cameras' own offsets: further apart (more than the
-                                              // accuracy an offset is held to), no one clock
 
 double clampOffset(double offsetUs)
 {
@@ -369,19 +367,31 @@ double estimateClockOffset(InputArray events, Size sensorSize, int minDisparity,
         (overallGain < kClearGain && best->meanConfidence < fits[0].meanConfidence - kConfidenceTolerance) ||
         best->meanConfidence < fits[0].meanConfidence * (1 - kMaxConfidenceLoss))
         return 0;
-    // Each camera's events alone point to an offset of their own. A clock gives both the same one; where they
-    // lie further apart than their noise explains, something else makes the slopes as well (the matching's own
-    // response to an edge's direction and speed), in amounts that differ between the cameras: more than
-    // kMaxCameraDisagreementUs apart, the estimate is refused; below, half the gap counts towards its
-    // uncertainty.
-    const double gap = std::abs(best->cameraSlopeUs[0] - best->cameraSlopeUs[1]);
-    const double gapError = std::sqrt(best->cameraErrorUs[0] * best->cameraErrorUs[0] +
-                                      best->cameraErrorUs[1] * best->cameraErrorUs[1]);
-    const double effectiveGain = std::min(overallGain, 1.0);
-    if (std::isfinite(gapError) && gap > 3 * gapError && gap / effectiveGain > kMaxCameraDisagreementUs)
-        return 0;
+    // Each camera's events alone point to an offset of their own: where its slopes cross zero on a line through
+    // every offset tried. A clock gives both the same one; where they lie apart, something else makes the slopes
+    // as well (the matching's own response to an edge's direction and speed, which differs between the cameras),
+    // and half the gap counts towards the uncertainty.
+    double gap = 0;
+    bool bothCameras = spread > 0;
+    double cameraOffset[2] = { 0, 0 };
+    for (int c = 0; c < 2 && bothCameras; c++)
+    {
+        double sumS = 0, sumOS = 0;
+        for (const SlopeFit& f : fits)
+        {
+            sumS += f.cameraSlopeUs[c];
+            sumOS += f.offsetUs * f.cameraSlopeUs[c];
+            bothCameras = bothCameras && std::isfinite(f.cameraErrorUs[c]);  // the camera's own fit worked
+        }
+        const double cameraGain = (sumOS - sumO * sumS / k) / spread;
+        bothCameras = bothCameras && cameraGain >= kMinGain;
+        if (bothCameras)
+            cameraOffset[c] = (sumO - sumS / cameraGain) / k;
+    }
+    if (bothCameras)
+        gap = std::abs(cameraOffset[0] - cameraOffset[1]);
     if (uncertaintyUs)
-        *uncertaintyUs = std::max(best->standardErrorUs, std::isfinite(gapError) ? gap / 2 : 0.0) / effectiveGain;
+        *uncertaintyUs = std::max(best->standardErrorUs / std::min(overallGain, 1.0), gap / 2);
     return best->offsetUs;
 }
 

@@ -131,16 +131,16 @@ exactly as a different depth would, and nothing in the events tells them apart: 
 and the offset should not be applied. The estimate is refused (0, infinite uncertainty) where the slope hardly
 follows the restamping, where it would lie at the +-20 ms end, where it follows only weakly (less than
 half as much as a clock would) and the matches at the estimate are less clear-cut (mean confidence) than with
-the clocks as given, and where each camera's events alone point to offsets more than 0.5 ms apart (a clock
-moves both cameras' disparities alike; what the matching does with edge directions does not).
+the clocks as given.
 @param events stereo events (camera column), time-ordered and rectified, any form getEventMat() accepts; a few
 seconds of a recording with motion is enough (the events are matched up to five times). Events outside the
 sensor are ignored.
 @param sensorSize the sensor size.
 @param minDisparity, maxDisparity the disparity range searched.
 @param uncertaintyUs optional output: the standard error of the offset [us] (clustered by block and ten
-seconds), or half the gap between the two cameras' own offsets where that is larger. Above a few hundred us
-the events hardly tell an offset from a disparity.
+seconds), or half the gap between the offsets each camera's events point to alone where that is larger (a
+clock moves both cameras' disparities alike; what the matching does with edge directions does not). Above a few
+hundred us the events hardly tell an offset from a disparity.
 @return the offset [us]; 0 when nothing could be compared or the estimate is refused.
 */
 CV_EXPORTS_W double estimateClockOffset(InputArray events, Size sensorSize, int minDisparity = 0, int maxDisparity = 40,
