@@ -37,7 +37,7 @@ export LSAN_OPTIONS=suppressions="$here/lsan.supp"
 # here: the row alignment test took 35 s, the temporal prior's 69 s, the lifetime copies on changing speeds
 # 50 s). They run in the normal unit test job; under the sanitizers their code paths are taken by the shorter
 # tests (the row bands' scenes, process() against processEvent(), the look-ahead and border closed forms, the
-# clock estimate's two shorter scenes) and by the realistic scene below.
+# clock estimate's shorter scenes) and by the realistic scene below.
 skipped='StereoEventMatcher.coupled_beats_frame_sgbm_on_textured_scenes'
 skipped+=':StereoEventMatcher.lifetime_modes_estimate_as_many_events_as_fixed_interval_from_the_start'
 skipped+=':StereoEventMatcher.textured_scenes_meet_the_accuracy_and_density_targets'
@@ -51,7 +51,6 @@ skipped+=':StereoEventMatcher.coupled_leads_frame_sgbm_by_ten_points_on_the_near
 skipped+=':StereoEventMatcher_Confidence.an_uncertain_match_does_not_override_the_events_own_plane'
 skipped+=':Event_ClockOffset.a_right_clock_moved_by_a_known_amount_moves_the_estimate_by_as_much'
 skipped+=':Event_ClockOffset.a_walking_figure_tells_a_moved_clock_and_says_how_sure_it_is_of_its_own'
-skipped+=':Event_ClockOffset.objects_that_each_move_at_one_speed_give_no_confident_wrong_offset'
 # The row bands against one thread: two of the six scene x mode cases (two_planes COUPLED, cluttered
 # FIXED_INTERVAL; 25-35 s each here). The bands' code is the same in every mode; the modes' own code runs
 # under the sanitizers in the single-thread tests, and cluttered COUPLED under TSan below.

@@ -83,9 +83,6 @@ struct SlopeFit
     double standardErrorUs = std::numeric_limits<double>::infinity();
     double offsetUs = 0;        // the right camera's restamping it was measured at
     double meanConfidence = 0;  // of the events with a disparity: how clear-cut the matches were
-    // The same fit over each camera's events alone: a clock moves both cameras' disparities alike.
-    double cameraSlopeUs[2] = { 0, 0 };
-    double cameraErrorUs[2] = { std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity() };
 };
 
 // Within-surface least squares of d on (u, w, |u|): every surface has its own intercept (its disparity), so only
@@ -214,8 +211,9 @@ private:
     }
 
     // (u, w, |u|, d). A clock offset moves an edge by u tau, one way for edges moving right and the other way
-    // for edges moving left; what the matching itself does with a faster edge (a thicker trail, a later
-    // counterpart) is the same both ways: |u| takes that up.
+    // for edges moving left; what the matching itself does with faster edges (a walking figure's fast limbs
+    // come out a little nearer than its slow body, their cost windows blending the two) is the same both ways:
+    // |u| takes that up.
     static Vec4d regressors(const Sample& s) { return Vec4d(s.u, s.w, std::abs(s.u), s.d); }
 
     std::vector<Sample> samples_;
@@ -271,19 +269,7 @@ SlopeFit slopeAt(const std::vector<Event>& left, const std::vector<Event>& right
         samples.push_back(Sample{ group, cell, disparity.at<float>(i), (float)u, (float)w });
     }
     smoothSpeeds(samples);
-    std::vector<Sample> cameraSamples[2];
-    for (const Sample& s : samples)
-        cameraSamples[(s.group / ((int64)blocksX * blocksY)) % 2].push_back(s);
     SlopeFit fit = SurfaceRegression(std::move(samples)).fit();
-    for (int c = 0; c < 2; c++)
-    {
-        const SlopeFit one = SurfaceRegression(std::move(cameraSamples[c])).fit();
-        if (one.ok)
-        {
-            fit.cameraSlopeUs[c] = one.slopeUs;
-            fit.cameraErrorUs[c] = one.standardErrorUs;
-        }
-    }
     fit.offsetUs = offsetUs;
     fit.meanConfidence = confidenceSum / std::max(1.0, matched);
     return fit;
@@ -367,31 +353,8 @@ double estimateClockOffset(InputArray events, Size sensorSize, int minDisparity,
         (overallGain < kClearGain && best->meanConfidence < fits[0].meanConfidence - kConfidenceTolerance) ||
         best->meanConfidence < fits[0].meanConfidence * (1 - kMaxConfidenceLoss))
         return 0;
-    // Each camera's events alone point to an offset of their own: where its slopes cross zero on a line through
-    // every offset tried. A clock gives both the same one; where they lie apart, something else makes the slopes
-    // as well (the matching's own response to an edge's direction and speed, which differs between the cameras),
-    // and half the gap counts towards the uncertainty.
-    double gap = 0;
-    bool bothCameras = spread > 0;
-    double cameraOffset[2] = { 0, 0 };
-    for (int c = 0; c < 2 && bothCameras; c++)
-    {
-        double sumS = 0, sumOS = 0;
-        for (const SlopeFit& f : fits)
-        {
-            sumS += f.cameraSlopeUs[c];
-            sumOS += f.offsetUs * f.cameraSlopeUs[c];
-            bothCameras = bothCameras && std::isfinite(f.cameraErrorUs[c]);  // the camera's own fit worked
-        }
-        const double cameraGain = (sumOS - sumO * sumS / k) / spread;
-        bothCameras = bothCameras && cameraGain >= kMinGain;
-        if (bothCameras)
-            cameraOffset[c] = (sumO - sumS / cameraGain) / k;
-    }
-    if (bothCameras)
-        gap = std::abs(cameraOffset[0] - cameraOffset[1]);
     if (uncertaintyUs)
-        *uncertaintyUs = std::max(best->standardErrorUs / std::min(overallGain, 1.0), gap / 2);
+        *uncertaintyUs = best->standardErrorUs / std::min(overallGain, 1.0);
     return best->offsetUs;
 }
 

@@ -138,9 +138,7 @@ sensor are ignored.
 @param sensorSize the sensor size.
 @param minDisparity, maxDisparity the disparity range searched.
 @param uncertaintyUs optional output: the standard error of the offset [us] (clustered by block and ten
-seconds), or half the gap between the offsets each camera's events point to alone where that is larger (a
-clock moves both cameras' disparities alike; what the matching does with edge directions does not). Above a few
-hundred us the events hardly tell an offset from a disparity.
+seconds). Above a few hundred us the events hardly tell an offset from a disparity.
 @return the offset [us]; 0 when nothing could be compared or the estimate is refused.
 */
 CV_EXPORTS_W double estimateClockOffset(InputArray events, Size sensorSize, int minDisparity = 0, int maxDisparity = 40,
