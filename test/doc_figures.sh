@@ -17,7 +17,6 @@ samples=$build/samples
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 failures=0
-declare -A realisticClocked realisticDefaults
 
 # 136233 -> 136,233
 thousands() { printf '%s' "$1" | sed -e ':a' -e 's/\([0-9]\)\([0-9]\{3\}\)\($\|,\)/\1,\2\3/;ta'; }
@@ -45,6 +44,8 @@ expectProse() { if tr '\n' ' ' < "$repo/$1" | grep -F -- "$2" > /dev/null; then 
 
 # A summary.md row's value: the text after "| LABEL ... | ".
 row() { grep -m1 -F "| $2" "$1" | sed -e 's/^[^|]*|[^|]*| //' -e 's/ |$//'; }
+# A summary's clock estimate as stereo.md writes it: "+3.66 +- 0.03 ms, applied".
+clockEstimate() { row "$1" "right camera's clock" | sed -n 's/^\([-+0-9.]*\) ms +- \([0-9.inf]*\) ms (estimateClockOffset[^)]*): \(applied\|not applied\).*/\1 +- \2 ms, \3/p'; }
 
 # The confidence quartiles and the share below 0.15 as doc/simulator.md's table gives them: "p25 / median / p75 | x %".
 confidence() { row "$1" "confidence of the left estimates" | sed 's/ (\([0-9.]*\) % below 0.15)$/ | \1 %/'; }
@@ -95,7 +96,7 @@ for scene in boxes_pair boxes_fast_pair walking_pair; do
   averaged=$(rate "$work/$scene.averaged/summary.md")
   clocked=$(rate "$work/$scene.clock/summary.md")
   defaults=$(rate "$work/$scene/summary.md")
-  clock=$(row "$work/$scene/summary.md" "right camera's clock" | sed -n 's/^\([-+0-9.]*\) ms +- \([0-9.inf]*\) ms (estimateClockOffset[^)]*): \(applied\|not applied\).*/\1 +- \2 ms, \3/p')
+  clock=$(clockEstimate "$work/$scene/summary.md")
   density=$(decimal "$(row "$work/$scene/summary.md" "ground truth: density" | awk '{ print $1 }')")
   expectPlain doc/simulator.md "| \`$scene\` | $own % | $misses | $averaged % | $clocked % | $defaults % (density $density %) |" \
     "event_stereo --scene=$scene --duration-ms=3000 --no-csv: --set=averagingRadius=0,fillRadius=0 --right-time-offset-ms=0 (matching rate, near misses), --set=fillRadius=0 --right-time-offset-ms=0, --set=fillRadius=0, defaults"
@@ -103,16 +104,17 @@ for scene in boxes_pair boxes_fast_pair walking_pair; do
   expectPlain doc/stereo.md "| $clock |" "event_stereo --scene=$scene --duration-ms=3000 --no-csv: clock estimate"
 done
 refused=""
+c=(); d=()  # per realistic scene, in order: --set=fillRadius=0 and the defaults
 # The realistic scenes: the same four rates in one line of simulator.md, the last two in stereo.md's filling table,
 # and what the clock estimate says.
 for scene in $realistic; do
   own=$(rate "$work/$scene.own/summary.md")
   averaged=$(rate "$work/$scene.averaged/summary.md")
-  realisticClocked[$scene]=$(rate "$work/$scene.clock/summary.md")
-  realisticDefaults[$scene]=$(rate "$work/$scene/summary.md")
-  expectProse doc/simulator.md "\`$scene\` $own / $averaged / ${realisticClocked[$scene]} / ${realisticDefaults[$scene]} %" \
+  c+=("$(rate "$work/$scene.clock/summary.md")")
+  d+=("$(rate "$work/$scene/summary.md")")
+  expectProse doc/simulator.md "\`$scene\` $own / $averaged / ${c[-1]} / ${d[-1]} %" \
     "event_stereo --scene=$scene --duration-ms=3000 --no-csv: the four settings of the pairs' table"
-  clock=$(row "$work/$scene/summary.md" "right camera's clock" | sed -n 's/^\([-+0-9.]*\) ms +- \([0-9.inf]*\) ms (estimateClockOffset[^)]*): \(applied\|not applied\).*/\1 +- \2 ms, \3/p')
+  clock=$(clockEstimate "$work/$scene/summary.md")
   case "$clock" in
     "+0.00 +- inf ms, not applied") refused="${refused:+$refused, }\`$scene\`" ;;
     *", not applied") expectProse doc/stereo.md "on \`$scene\` it finds ${clock%, not applied} and is not applied" "$scene: the clock estimate" ;;
@@ -120,8 +122,6 @@ for scene in $realistic; do
   esac
 done
 expectProse doc/stereo.md "On the realistic scenes ($refused), whose clocks agree" "the realistic scenes whose clock estimate is refused"
-c=(); d=()
-for scene in $realistic; do c+=("${realisticClocked[$scene]}"); d+=("${realisticDefaults[$scene]}"); done
 expect doc/stereo.md "| \`boxes\` / \`boxes_fast\` / \`walking\` | ${c[0]} / ${c[1]} / ${c[2]} % | ${d[0]} / ${d[1]} / ${d[2]} % |" \
   "the realistic scenes: --set=fillRadius=0, defaults (stereo.md's filling table)"
 expect doc/stereo.md "| \`walking_near\` / \`low_contrast\` | ${c[3]} / ${c[4]} % | ${d[3]} / ${d[4]} % |" "the same"

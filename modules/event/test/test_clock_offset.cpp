@@ -38,7 +38,7 @@ TEST(Event_ClockOffset, a_walking_figure_tells_a_moved_clock_and_says_how_sure_i
     // Limbs that swing: speeds along the rows change on one surface, so a moved clock is told from a
     // disparity. The matching itself gives a faster edge a slightly larger disparity, whichever way it moves;
     // the estimate takes that up, and says how far off it may be: within two of its uncertainties of the
-    // clock, or no estimate.
+    // clock (clocks that agree may get no estimate at all).
     const Size size(240, 180);
     ASSERT_EQ(0, StereoEventSimulator::create("walking")->getSettings().rightClockOffsetUs);
     double u0 = 0;

@@ -129,7 +129,7 @@ that speed up, slow down or turn, edges of several directions on an object movin
 rotation. Where one object moves at one speed along the rows, an offset shifts every disparity by one amount,
 exactly as a different depth would, and nothing in the events tells them apart: @p uncertaintyUs is then large
 and the offset should not be applied. The estimate is refused (0, infinite uncertainty) where the slope hardly
-follows the restamping, where it would lie at the +-20 ms end, where it follows only weakly (less than
+follows the restamping, where it would lie at the +-20 ms end, and where it follows only weakly (less than
 half as much as a clock would) and the matches at the estimate are less clear-cut (mean confidence) than with
 the clocks as given.
 @param events stereo events (camera column), time-ordered and rectified, any form getEventMat() accepts; a few
