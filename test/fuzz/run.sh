@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# Builds the libFuzzer targets (clang, ASan + UBSan, in build-fuzz/ of the clone, ccache) and runs each.
+# Builds the libFuzzer targets (clang, ASan + UBSan, in build-fuzz/ of the clone, ccache) and runs each, as
+# many at a time as there are cores.
 #
 #   test/fuzz/run.sh [--runs N | --seconds S] [target ...]
 #
@@ -7,8 +8,8 @@
 # Default: 1,000,000 executions each. Seeds: test/fuzz/corpus/<target> (committed, from make_seeds.py),
 # AEDAT 4.0 files the module's writer makes, and the real samples of ../shared/data/format_samples when
 # present. New inputs go to build-fuzz/corpus/<target>, never into the repository. A crash, leak, timeout,
-# out-of-memory or broken invariant stops the run with libFuzzer's report and a non-zero exit status; the
-# input that did it is saved as build-fuzz/artifacts/<target>-crash-*.
+# out-of-memory or broken invariant stops that target with libFuzzer's report, and the run ends with a non-zero
+# exit status once the others are done; the input that did it is saved as build-fuzz/artifacts/<target>-crash-*.
 set -euo pipefail
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
 repo=$(cd "$here/../.." && pwd)
@@ -60,19 +61,16 @@ export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
 export LSAN_OPTIONS=suppressions="$repo/test/lsan.supp"
 export TMPDIR=${TMPDIR:-/tmp}
 mkdir -p "$build/artifacts"
-summary=()
-for t in "${targets[@]}"; do
-  [ -x "$build/test/fuzz/fuzz_$t" ] || { echo "run.sh: unknown target $t" >&2; exit 2; }
-  exe="$build/test/fuzz/fuzz_$t"
-  work="$build/corpus/$t"
+# One target: its log in $build/fuzz_<t>.log, its summary line in $build/fuzz_<t>.summary; non-zero on a finding.
+fuzz_one() {
+  local t=$1 exe="$build/test/fuzz/fuzz_$1" work="$build/corpus/$1" seeds_dir="$build/seeds/$1"
+  local log="$build/fuzz_$1.log" start runs
   mkdir -p "$work"
   cp -n "$here/corpus/$t"/* "$work"/ 2>/dev/null || true
-  [ "$t" = aedat4 ] && "$build/test/fuzz/fuzz_write_seeds" "$work"
-  seeds_dir="$build/seeds/$t"
+  [ "$t" != aedat4 ] || "$build/test/fuzz/fuzz_write_seeds" "$work"
   rm -rf "$seeds_dir"; mkdir -p "$seeds_dir"
   while IFS= read -r f; do [ -n "$f" ] && ln -sf "$f" "$seeds_dir/"; done < <(extra_seeds "$t")
   echo "== fuzz: $t (${budget[*]})"
-  log="$build/fuzz_$t.log"
   start=$(date +%s)
   # -max_len 64 KiB: real samples are cut to their first 64 KiB; -malloc_limit_mb: a header claiming 2^40
   # events must not make the reader allocate it.
@@ -80,10 +78,29 @@ for t in "${targets[@]}"; do
        -artifact_prefix="$build/artifacts/$t-" -print_final_stats=1 "$work" "$seeds_dir" > "$log" 2>&1; then
     tail -60 "$log"
     echo "== fuzz: $t FAILED (log: $log)"
-    exit 1
+    return 1
   fi
   runs=$(grep -o 'Done [0-9]* runs' "$log" | grep -o '[0-9]*' || echo "?")
-  summary+=("$(printf '%-14s %10s executions  %5d s  corpus %4d files' "$t" "$runs" $(( $(date +%s) - start )) "$(ls "$work" | wc -l)")")
+  printf '%-14s %10s executions  %5d s  corpus %4d files\n' "$t" "$runs" $(( $(date +%s) - start )) \
+    "$(ls "$work" | wc -l)" > "$build/fuzz_$t.summary"
+}
+
+for t in "${targets[@]}"; do
+  [ -x "$build/test/fuzz/fuzz_$t" ] || { echo "run.sh: unknown target $t" >&2; exit 2; }
+  rm -f "$build/fuzz_$t.summary" "$build/fuzz_$t.status"
 done
+# The targets run as many at a time as there are cores; each one's status is kept in a file, since wait -n,
+# which keeps the count down, reaps them in any order.
+parallel=$(nproc)
+for t in "${targets[@]}"; do
+  while [ "$(jobs -rp | wc -l)" -ge "$parallel" ]; do wait -n || true; done
+  { s=0; fuzz_one "$t" || s=$?; echo "$s" > "$build/fuzz_$t.status"; } &
+done
+wait
+failed=0
+for t in "${targets[@]}"; do
+  [ "$(cat "$build/fuzz_$t.status" 2>/dev/null)" = 0 ] || { echo "== fuzz: $t did not pass"; failed=1; }
+done
+[ "$failed" = 0 ] || exit 1
 echo "== fuzz: no crash, leak, timeout or broken invariant"
-printf '%s\n' "${summary[@]}"
+for t in "${targets[@]}"; do cat "$build/fuzz_$t.summary"; done

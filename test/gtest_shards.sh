@@ -1,0 +1,26 @@
+#!/usr/bin/env bash
+# Runs a gtest program as N shards at once (gtest's GTEST_TOTAL_SHARDS / GTEST_SHARD_INDEX: each test in
+# exactly one shard), so a 2-core machine runs the single-threaded tests two at a time. Each shard's output is
+# shown whole after all have ended, in shard order; the status is the first failing shard's (0 when all pass).
+#
+#   test/gtest_shards.sh N PROGRAM [gtest arguments ...]
+set -uo pipefail
+shards=${1:?usage: gtest_shards.sh N PROGRAM [arguments ...]}
+shift
+[ $# -gt 0 ] || { echo "usage: gtest_shards.sh N PROGRAM [arguments ...]" >&2; exit 2; }
+logs=$(mktemp -d)
+trap 'rm -rf "$logs"' EXIT
+pids=()
+for ((i = 0; i < shards; i++)); do
+  GTEST_TOTAL_SHARDS=$shards GTEST_SHARD_INDEX=$i "$@" > "$logs/$i.log" 2>&1 &
+  pids+=($!)
+done
+status=0
+for ((i = 0; i < shards; i++)); do
+  wait "${pids[$i]}"
+  s=$?
+  echo "== gtest_shards: shard $((i + 1)) of $shards, status $s"
+  cat "$logs/$i.log"
+  [ "$status" != 0 ] || status=$s
+done
+exit "$status"
