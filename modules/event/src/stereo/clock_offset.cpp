@@ -28,6 +28,8 @@ const double kConfidenceTolerance = 0.002; // mean confidence an offset may cost
 const double kMaxConfidenceLoss = 0.05;    // share of the mean confidence no clock offset costs
 const double kMinGain = 0.1;               // below, the slope hardly follows the offset: nothing to go by
 const double kClearGain = 0.5;             // from here on the slope follows the offset as a clock would
+const double kMinGainSignificance = 3;     // standard errors of the gain
+const double kGainProbeUs = 2000;          // the least span of offsets the gain is measured over
 
 double clampOffset(double offsetUs)
 {
@@ -222,9 +224,24 @@ private:
     double standardError_ = 0;
 };
 
-// Matches the pair with the right camera restamped by @p offsetUs and fits the slope of disparity on speed.
-SlopeFit slopeAt(const std::vector<Event>& left, const std::vector<Event>& right, Size size, int minD, int maxD,
-                 double offsetUs)
+// Each camera's normal flows from its own events (LifetimeEstimator, defaults): the same at every restamping, so
+// that the slope changes with the offset through the disparities alone. The matcher's flows would not be: a
+// matched event takes its flow from the other camera's window, which the restamping moves, and that makes a
+// slope of its own.
+std::vector<Vec2f> ownFlows(const std::vector<Event>& events, Size size)
+{
+    Mat lifetimes, flow;
+    LifetimeEstimator::create(size)->process(events, lifetimes, flow);
+    std::vector<Vec2f> flows(events.size());
+    for (size_t i = 0; i < events.size(); i++)
+        flows[i] = flow.at<Vec2f>((int)i);
+    return flows;
+}
+
+// Matches the pair with the right camera restamped by @p offsetUs and fits the slope of disparity on speed
+// (@p flows: each camera's, in its events' order).
+SlopeFit slopeAt(const std::vector<Event>& left, const std::vector<Event>& right, const std::vector<Vec2f> flows[2],
+                 Size size, int minD, int maxD, double offsetUs)
 {
     Mat merged;
     mergeStereoEvents(left, right, merged, offsetUs);
@@ -235,15 +252,17 @@ SlopeFit slopeAt(const std::vector<Event>& left, const std::vector<Event>& right
     // its events.
     matcher->setAveragingRadius(0);
     matcher->setFillRadius(0);
-    Mat disparity, flags, flow, confidence;
-    matcher->process(merged, disparity, noArray(), flags, noArray(), flow, confidence);
+    Mat disparity, flags, confidence;
+    matcher->process(merged, disparity, noArray(), flags, noArray(), noArray(), confidence);
     const Mat_<Event> ev = getEventMat(merged);
     const int blocksX = (size.width + kBlock - 1) / kBlock, blocksY = (size.height + kBlock - 1) / kBlock;
     const int64 t0 = ev.rows > 0 ? ev(0).t : 0;
     std::vector<Sample> samples;
     double confidenceSum = 0, matched = 0;
+    size_t taken[2] = { 0, 0 };  // each camera's events keep their order in the merged stream
     for (int i = 0; i < ev.rows; i++)
     {
+        const Vec2f v = flows[ev(i).camera][taken[ev(i).camera]++];
         const int f = flags.at<int>(i);
         if (f & STEREO_HAS_DISPARITY)
         {
@@ -252,7 +271,6 @@ SlopeFit slopeAt(const std::vector<Event>& left, const std::vector<Event>& right
         }
         if (!(f & STEREO_HAS_DISPARITY) || (f & STEREO_BEYOND_VIEW) || confidence.at<float>(i) < kMinConfidence)
             continue;
-        const Vec2f v = flow.at<Vec2f>(i);
         const double speed2 = (double)v[0] * v[0] + (double)v[1] * v[1];
         // An edge within 60 degrees of vertical: along the row it moves |f|^2 / f_x.
         if (!(speed2 > 0) || 4.0 * v[0] * v[0] < speed2)
@@ -302,7 +320,9 @@ double estimateClockOffset(InputArray events, Size sensorSize, int minDisparity,
         return 0;
     // The slope g(offset) is the residual offset, damped by how noisy the measured speeds are (a regression
     // on a noisy regressor is flattened): secant steps find its root.
-    std::vector<SlopeFit> fits(1, slopeAt(l, r, sensorSize, minDisparity, maxDisparity, 0));
+    const std::vector<Vec2f> flows[2] = { ownFlows(l, sensorSize), ownFlows(r, sensorSize) };
+    const auto slope = [&](double offsetUs) { return slopeAt(l, r, flows, sensorSize, minDisparity, maxDisparity, offsetUs); };
+    std::vector<SlopeFit> fits(1, slope(0));
     if (!fits[0].ok)
         return 0;
     // The first step assumes the damping typical of smoothed plane-fit flows; the secant then measures it.
@@ -310,7 +330,7 @@ double estimateClockOffset(InputArray events, Size sensorSize, int minDisparity,
     double offset = clampOffset(-fits[0].slopeUs / gain);
     for (int run = 1; run < kMaxMatcherRuns; run++)
     {
-        const SlopeFit fit = slopeAt(l, r, sensorSize, minDisparity, maxDisparity, offset);
+        const SlopeFit fit = slope(offset);
         if (!fit.ok)
             break;
         fits.push_back(fit);
@@ -331,25 +351,54 @@ double estimateClockOffset(InputArray events, Size sensorSize, int minDisparity,
     for (const SlopeFit& f : fits)
         if (std::abs(f.slopeUs) <= std::abs(best->slopeUs))
             best = &f;
-    // How sure: the slope's standard error through the gain of g over every offset tried (a line through
-    // them all). Where a surface's disparity follows its speed for another reason (parts of a figure at
-    // slightly different depths swinging in turn, surfaces a block cannot tell apart), g hardly follows the
-    // offset: a low gain says so. Where it follows only weakly, an offset that makes the matches less
-    // clear-cut than none is no correction; where it follows as a clock would, the events have spoken (a more
-    // sensitive camera's earlier events match a little less clear-cut once aligned, and better), unless the
-    // matches lose more than kMaxConfidenceLoss of their confidence: then the slope vanished by chance far from
-    // the clock (fast diagonal boxes whose clocks agree: 17 ms away, a tenth less clear-cut).
-    double sumO = 0, sumG = 0, sumOO = 0, sumOG = 0;
+    // The gain is measured over the offsets tried; where they lie close together (the first slope was already
+    // near zero) one more run a little way off gives it a span.
+    double lowest = best->offsetUs, highest = best->offsetUs;
     for (const SlopeFit& f : fits)
     {
-        sumO += f.offsetUs;
-        sumG += f.slopeUs;
-        sumOO += f.offsetUs * f.offsetUs;
-        sumOG += f.offsetUs * f.slopeUs;
+        lowest = std::min(lowest, f.offsetUs);
+        highest = std::max(highest, f.offsetUs);
     }
-    const double k = (double)fits.size(), spread = sumOO - sumO * sumO / k;
-    const double overallGain = spread > 0 ? (sumOG - sumO * sumG / k) / spread : gain;
-    if (!(overallGain >= kMinGain) || std::abs(best->offsetUs) >= kMaxOffsetUs ||
+    if (highest - lowest < kGainProbeUs)
+    {
+        const double probe = best->offsetUs + kGainProbeUs <= kMaxOffsetUs ? best->offsetUs + kGainProbeUs
+                                                                            : best->offsetUs - kGainProbeUs;
+        const ptrdiff_t bestIndex = best - fits.data();
+        const SlopeFit fit = slope(probe);
+        if (fit.ok)
+            fits.push_back(fit);
+        best = &fits[(size_t)bestIndex];
+    }
+    // How sure: the slope's standard error through the gain of g over every offset tried (a line through them
+    // all, each slope weighted by its precision). Where a surface's disparity follows its speed for another
+    // reason (parts of a figure at slightly different depths swinging in turn, surfaces a block cannot tell
+    // apart) or its speeds hardly vary (one object at one speed: what varies is the speed estimates' noise), g
+    // hardly follows the offset, or not measurably beyond the slopes' own errors: a low gain, or one within
+    // kMinGainSignificance standard errors of none, says so. Where it follows only weakly, an offset that makes
+    // the matches less clear-cut than none is no correction; where it follows as a clock would, the events
+    // have spoken (a more sensitive camera's earlier events match a little less clear-cut once aligned, and
+    // better), unless the matches lose more than kMaxConfidenceLoss of their confidence: then the slope
+    // vanished by chance far from the clock.
+    double sumW = 0, sumO = 0, sumG = 0;
+    for (const SlopeFit& f : fits)
+    {
+        const double w = 1.0 / std::max(1.0, f.standardErrorUs * f.standardErrorUs);
+        sumW += w;
+        sumO += w * f.offsetUs;
+        sumG += w * f.slopeUs;
+    }
+    double spread = 0, covariance = 0;
+    for (const SlopeFit& f : fits)
+    {
+        const double w = 1.0 / std::max(1.0, f.standardErrorUs * f.standardErrorUs);
+        spread += w * (f.offsetUs - sumO / sumW) * (f.offsetUs - sumO / sumW);
+        covariance += w * (f.offsetUs - sumO / sumW) * (f.slopeUs - sumG / sumW);
+    }
+    if (!(spread > 0))
+        return 0;
+    const double overallGain = covariance / spread, gainError = std::sqrt(1.0 / spread);
+    if (!(overallGain >= kMinGain) || overallGain < kMinGainSignificance * gainError ||
+        std::abs(best->offsetUs) >= kMaxOffsetUs ||
         (overallGain < kClearGain && best->meanConfidence < fits[0].meanConfidence - kConfidenceTolerance) ||
         best->meanConfidence < fits[0].meanConfidence * (1 - kMaxConfidenceLoss))
         return 0;

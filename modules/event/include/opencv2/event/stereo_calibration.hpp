@@ -117,23 +117,25 @@ disparity comes out u tau too large. An edge's speed along the row is u = |f|^2 
 so an offset shows as disparities that grow with u on one surface. The events are matched (StereoEventMatcher,
 STEREO_COUPLED, defaults, each event's own estimate: no averaging); for each camera, 8 x 8 px block and ten
 seconds, the confident estimates are cut into surfaces where their disparities are more than a pixel apart,
-and the disparity is regressed on u within
-them (u taken as the median of the block's estimates over 50 ms, as one plane fit's flow is too noisy; a
-second regressor, f_y / f_x, takes up a residual row offset, which moves oblique edges along the row; a third,
-|u|, what the matching does with faster edges whichever way they move, where a clock moves edges that travel
-left and right in opposite directions). The right camera is restamped by the offset that makes the slope zero
-(secant steps, within +-20 ms), and the events are matched again, up to five times.
+and the disparity is regressed on u within them. The flows come from each camera's own events
+(LifetimeEstimator, defaults), so that they are the same whatever the restamping; u is taken as the median of
+the block's estimates over 50 ms, as one plane fit's flow is too noisy. A second regressor, f_y / f_x, takes up
+a residual row offset, which moves oblique edges along the row; a third, |u|, what the matching does with
+faster edges whichever way they move, where a clock moves edges that travel left and right in opposite
+directions. The right camera is restamped by the offset that makes the slope zero (secant steps, within
++-20 ms), and the events are matched again, up to five matchings in all, and once more 2 ms away when the offsets tried
+lie closer together, so that how the slope follows the restamping (the gain) is measured.
 
 An offset can only be told from a disparity where the speed along the rows varies on one surface: objects
 that speed up, slow down or turn, edges of several directions on an object moving with a vertical component,
 rotation. Where one object moves at one speed along the rows, an offset shifts every disparity by one amount,
 exactly as a different depth would, and nothing in the events tells them apart: @p uncertaintyUs is then large
 and the offset should not be applied. The estimate is refused (0, infinite uncertainty) where the slope hardly
-follows the restamping, where it would lie at the +-20 ms end, and where it follows only weakly (less than
-half as much as a clock would) and the matches at the estimate are less clear-cut (mean confidence) than with
-the clocks as given.
+follows the restamping or not measurably (a gain below 0.1, or within three of its standard errors of none),
+where it would lie at the +-20 ms end, and where it follows only weakly (less than half as much as a clock
+would) and the matches at the estimate are less clear-cut (mean confidence) than with the clocks as given.
 @param events stereo events (camera column), time-ordered and rectified, any form getEventMat() accepts; a few
-seconds of a recording with motion is enough (the events are matched up to five times). Events outside the
+seconds of a recording with motion is enough (the events are matched up to six times). Events outside the
 sensor are ignored.
 @param sensorSize the sensor size.
 @param minDisparity, maxDisparity the disparity range searched.
