@@ -613,7 +613,7 @@ TEST(StereoEventMatcher, the_colour_scale_spans_the_disparities_present)
         Mat shown;
         m->getActiveDisparity(t, shown, camera);
         ASSERT_GT(countNonZero(shown >= 0), 0);
-        ASSERT_EQ(countNonZero(shown >= 0), countNonZero(shown >= 12.f & shown < 13.f)) << "camera " << camera;
+        ASSERT_EQ(countNonZero(shown >= 0), countNonZero((shown >= 12.f) & (shown < 13.f))) << "camera " << camera;
         EXPECT_EQ(Vec2i(11, 13), m->getDisparityDisplayRange(t, camera)) << "camera " << camera;
     }
     EXPECT_EQ(Vec2i(0, 40), m->getDisparityDisplayRange(t + 1e6, CAMERA_LEFT));
