@@ -54,10 +54,29 @@ for w in OPENJPEG JASPER QUIRC IPP ITT ADE PROTOBUF GTK QT FFMPEG GSTREAMER V4L 
   off+=("-DWITH_$w=OFF")
 done
 
-echo "== contrib_build: configuring OpenCV $(basename "$src") with $repo/modules in $build"
+# The module is built from a copy of the repository in a fixed place under the cache, where only the files whose
+# content changed are written: from a new clone, ninja and ccache then see the same paths and recompile what
+# changed, not the whole module (the clone's own path would be new to both every time). The copy keeps the
+# repository's layout (the module reads the version from its CMakeLists.txt and the tests read its fixtures),
+# and a link beside it leads to the recordings beside the clone (../shared/data, when there).
+copy=$cache/contrib-repository
+git -C "$repo" rev-parse --git-dir > /dev/null 2>&1 \
+  || { echo "contrib_build: $repo is not a git checkout (the copy takes the files git sees)" >&2; exit 1; }
+mkdir -p "$copy"
+git -C "$repo" ls-files --cached --others --exclude-standard -z | sort -z > "$build/repository-files"
+while IFS= read -r -d '' f; do
+  [ -f "$repo/$f" ] || continue  # a file deleted in the working tree but not in the index
+  mkdir -p "$copy/$(dirname "$f")"
+  cmp -s "$repo/$f" "$copy/$f" || cp "$repo/$f" "$copy/$f"
+done < "$build/repository-files"
+(cd "$copy" && find . -type f -printf '%P\0' | sort -z) | comm -z -23 - "$build/repository-files" \
+  | while IFS= read -r -d '' f; do rm -f "$copy/$f"; done
+if [ -d "$repo/../shared" ]; then ln -sfn "$(cd "$repo/../shared" && pwd)" "$(dirname "$copy")/shared"; else rm -f "$(dirname "$copy")/shared"; fi
+
+echo "== contrib_build: configuring OpenCV $(basename "$src") with $repo/modules (copied to $copy) in $build"
 cmake -S "$src" -B "$build" "${generator[@]}" "${launcher[@]}" "${off[@]}" \
   -DCMAKE_BUILD_TYPE=Release \
-  -DOPENCV_EXTRA_MODULES_PATH="$repo/modules" \
+  -DOPENCV_EXTRA_MODULES_PATH="$copy/modules" \
   -DBUILD_LIST="$modules" \
   -DBUILD_TESTS=ON -DBUILD_PERF_TESTS=ON \
   -DOPENCV_BUILD_TEST_MODULES_LIST=event -DOPENCV_BUILD_PERF_TEST_MODULES_LIST=event \
