@@ -71,7 +71,7 @@ while IFS= read -r -d '' f; do
 done < "$build/repository-files"
 (cd "$copy" && find . -type f -printf '%P\0' | sort -z) | comm -z -23 - "$build/repository-files" \
   | while IFS= read -r -d '' f; do rm -f "$copy/$f"; done
-if [ -d "$repo/../shared" ]; then ln -sfn "$(cd "$repo/../shared" && pwd)" "$(dirname "$copy")/shared"; else rm -f "$(dirname "$copy")/shared"; fi
+if [ -d "$repo/../shared" ]; then ln -sfn "$(cd "$repo/../shared" && pwd -P)" "$(dirname "$copy")/shared"; else rm -f "$(dirname "$copy")/shared"; fi
 
 echo "== contrib_build: configuring OpenCV $(basename "$src") with $repo/modules (copied to $copy) in $build"
 cmake -S "$src" -B "$build" "${generator[@]}" "${launcher[@]}" "${off[@]}" \
