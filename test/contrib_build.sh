@@ -95,8 +95,7 @@ cmake --build "$build" --target "${targets[@]}" > "$build/build.log" 2>&1 \
 if command -v ccache >/dev/null; then ccache -s | grep -Ei "hit|miss" | head -4 || true; fi
 
 echo "== contrib_build: opencv_test_event"
-shards=$(nproc); [ "$shards" -le 8 ] || shards=8
-bash "$here/gtest_shards.sh" "$shards" "$build/bin/opencv_test_event"
+bash "$here/gtest_shards.sh" "$build/bin/opencv_test_event"
 if [[ " ${python[*]} " == *" -DBUILD_opencv_python3=ON "* ]]; then
   # The same Python API as the standalone build's (both from OpenCV's generator on the same headers).
   standalone_signatures="$repo/build/python_generated/pyopencv_signatures.json"

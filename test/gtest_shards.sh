@@ -1,13 +1,14 @@
 #!/usr/bin/env bash
-# Runs a gtest program as N shards at once (gtest's GTEST_TOTAL_SHARDS / GTEST_SHARD_INDEX: each test in
-# exactly one shard), so a 2-core machine runs the single-threaded tests two at a time. Each shard's output is
-# shown whole after all have ended, in shard order; the status is the first failing shard's (0 when all pass).
+# Runs a gtest program as one shard per core, at most 8, at once (gtest's GTEST_TOTAL_SHARDS /
+# GTEST_SHARD_INDEX: each test in exactly one shard), so a 2-core machine runs the single-threaded tests two at
+# a time. Each shard's output is shown whole after all have ended, in shard order; the status is the first
+# failing shard's (0 when all pass).
 #
-#   test/gtest_shards.sh N PROGRAM [gtest arguments ...]
+#   test/gtest_shards.sh PROGRAM [gtest arguments ...]
 set -uo pipefail
-shards=${1:?usage: gtest_shards.sh N PROGRAM [arguments ...]}
-shift
-[ $# -gt 0 ] || { echo "usage: gtest_shards.sh N PROGRAM [arguments ...]" >&2; exit 2; }
+[ $# -gt 0 ] || { echo "usage: gtest_shards.sh PROGRAM [arguments ...]" >&2; exit 2; }
+shards=$(nproc)
+[ "$shards" -le 8 ] || shards=8
 logs=$(mktemp -d)
 trap 'rm -rf "$logs"' EXIT
 pids=()

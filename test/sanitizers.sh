@@ -61,9 +61,7 @@ skipped+=':StereoEventMatcher_Filling.puts_the_events_one_camera_misses_where_th
 for case in 1 2 3 4; do
   skipped+=":StereoEventMatcher_RowBands.give_the_results_of_one_thread_bit_for_bit/$case"
 done
-# Single-threaded tests mostly: as many shards at once as there are cores (at most 8).
-shards=$(nproc); [ "$shards" -le 8 ] || shards=8
-bash "$here/gtest_shards.sh" "$shards" "$build/modules/event/opencv_test_event" --gtest_filter="-$skipped"
+bash "$here/gtest_shards.sh" "$build/modules/event/opencv_test_event" --gtest_filter="-$skipped"
 echo "== sanitizers: samples on the simulator and on every real recording"
 work=$(mktemp -d)
 "$build/samples/event_stereo_overview" --scene=cluttered --simulate-ms=150 --output="$work/overview" > /dev/null

@@ -379,10 +379,11 @@ double estimateClockOffset(InputArray events, Size sensorSize, int minDisparity,
     // have spoken (a more sensitive camera's earlier events match a little less clear-cut once aligned, and
     // better), unless the matches lose more than kMaxConfidenceLoss of their confidence: then the slope
     // vanished by chance far from the clock.
+    const auto weight = [](const SlopeFit& f) { return 1.0 / std::max(1.0, f.standardErrorUs * f.standardErrorUs); };
     double sumW = 0, sumO = 0, sumG = 0;
     for (const SlopeFit& f : fits)
     {
-        const double w = 1.0 / std::max(1.0, f.standardErrorUs * f.standardErrorUs);
+        const double w = weight(f);
         sumW += w;
         sumO += w * f.offsetUs;
         sumG += w * f.slopeUs;
@@ -390,7 +391,7 @@ double estimateClockOffset(InputArray events, Size sensorSize, int minDisparity,
     double spread = 0, covariance = 0;
     for (const SlopeFit& f : fits)
     {
-        const double w = 1.0 / std::max(1.0, f.standardErrorUs * f.standardErrorUs);
+        const double w = weight(f);
         spread += w * (f.offsetUs - sumO / sumW) * (f.offsetUs - sumO / sumW);
         covariance += w * (f.offsetUs - sumO / sumW) * (f.slopeUs - sumG / sumW);
     }
