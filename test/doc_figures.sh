@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
-# ctest `doc_figures`: the figures the docs quote for the real recordings, the DAVIS240-pair and realistic scenes and the
-# design choices (perf/design_figures)
+# ctest `doc_figures`: the figures the docs quote for the real recordings (stereo, statistics, lifetime check,
+# filters), the DAVIS240-pair and realistic scenes and the design choices (perf/design_figures)
 # come from today's build. Each documented command runs (on ../shared/data, or on the simulator), the figure
 # is taken from what it prints, formatted as the docs write it, and must appear in the doc that quotes it
 # (counts exactly, percentages to the decimal the doc gives). A figure that moved fails with the command, the
@@ -251,6 +251,25 @@ for pair in "Fan_disp8.dat:two fans (9.8 s)" "movingPersons.dat:two people walki
     line="$line $(removedText "$kept" "$total") |"
   done
   expect doc/filters.md "$line" "event_player $file --sensor=DVS128 $extra --filter=hot_pixels, relativeRate 10 and 5"
+done
+
+# The lifetime check on every real recording (doc/lifetime.md's table, its commands): "median (quartiles)" for
+# inlierDistance=0 and the defaults, two decimals (one from 10 on), the doc's bold marks ignored.
+arrival() {  # arrival FILE ARGS...: event_lifetime's check line as the table writes it
+  local file=$1
+  shift
+  "$samples/event_lifetime" "$file" "$@" --output="$work/lifetime" 2> /dev/null \
+    | sed -n 's/^lifetime check: the edge reached the next pixel after \([0-9.]*\) lifetimes (median; quartiles \([0-9.]*\) \/ \([0-9.]*\)) over.*/\1 \2 \3/p' \
+    | awk '{ for (i = 1; i <= 3; i++) v[i] = sprintf($i < 10 ? "%.2f" : "%.1f", $i); print v[1] " (" v[2] " / " v[3] ")" }'
+}
+for pair in "format_samples/aestream_davis346.aedat4:DAVIS346 sample (aestream, 346 x 260)" \
+            "stereo_dvs128_tum/Fan_disp8.dat:TUM Fan (DVS128, \`--sensor=DVS128\`):--sensor=DVS128" \
+            "stereo_dvs128_tum/pendulum_left_30cm_2.tsv.txt:TUM pendulum (DVS128):--sensor=DVS128" \
+            "stereo_dvs128_tum/movingPersons.dat:TUM movingPersons (DVS128, \`--one-based\`):--sensor=DVS128 --one-based" \
+            "format_samples/tonic_sample_dvxplorer.aedat4:DVXplorer sample (tonic)"; do
+  IFS=: read -r file label extra <<< "$pair"
+  expectPlain doc/lifetime.md "| $label | $(arrival "$shared/$file" $extra --set=inlierDistance=0) | $(arrival "$shared/$file" $extra) |" \
+    "event_lifetime $file $extra, inlierDistance=0 and the defaults: the lifetime check"
 done
 
 # Which TUM files count pixels from 1 (doc/reading_recordings.md).
