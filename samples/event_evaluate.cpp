@@ -1,7 +1,7 @@
 // event_evaluate: runs a stereo method on a recording with per-event ground truth and writes a report.
 //
 //   event_evaluate [--scene=NAME --duration-ms=MS | --input=REC [--gt=REC.gt.csv]] [--method=coupled]
-//                  [--window-ms=33] [--output=DIR] [--set=PARAM=VALUE[,PARAM=VALUE...]]
+//                  [--window-ms=33] [--output=DIR] [--set=PARAM=VALUE[,PARAM=VALUE...]] [--min-quality=Q]
 //   methods: coupled (the default), decoupled, fixed (StereoEventMatcher modes), sgbm, lifetime, none
 //
 // Ground truth comes from the simulator (a named scene, simulated in memory) or from the side file that
@@ -9,7 +9,8 @@
 // Methods: the StereoEventMatcher modes and `sgbm` (FrameStereoMatcher: what users do today, dv-processing's
 // semi-dense matcher: edge frames per window + cv::StereoSGBM), with --set for their parameters (FileStorage names, e.g.
 // --set=uniquenessRatio=20,costWindow=7, lifetimeEstimator.inlierDistance=0 for its lifetime estimator);
-// `lifetime` = LifetimeEstimator per camera (lifetime and noise metrics, no disparity; --set takes its names).
+// `lifetime` = LifetimeEstimator per camera (lifetime and noise metrics, no disparity; --set takes its names;
+// --min-quality drops the lifetimes of lower quality: those events count as without a lifetime).
 //
 // Writes DIR/report.md and DIR/metrics.csv (disparity density, share within 1 px, matching rate (left signal
 // events within 1 px of the truth over all left signal events) and where the other left signal events went,
@@ -53,6 +54,7 @@ struct Options
     std::string sensorSettings;  // --sensor-set, as given
     std::string filter, filterSettings;  // --filter, --filter-set
     double durationMs = 0, windowMs = 0;
+    double minQuality = 0;  // --method=lifetime: lifetimes of lower quality dropped
 };
 
 const char* const keys =
@@ -67,7 +69,8 @@ const char* const keys =
     "{window-ms   | 33         | evaluation window (and SGBM frame) [ms]}"
     "{output      | evaluation | output folder}"
     "{set         |            | method parameters NAME=VALUE, comma separated (FileStorage names, e.g. uniquenessRatio=20; the matcher's lifetime estimator as lifetimeEstimator.NAME, e.g. lifetimeEstimator.inlierDistance=0; with --method=lifetime the estimator's own names)}"
-    "{sensor-set  |            | simulator settings NAME=VALUE, comma separated (SimulatorSettings fields, e.g. jitterUs=300)}";
+    "{sensor-set  |            | simulator settings NAME=VALUE, comma separated (SimulatorSettings fields, e.g. jitterUs=300)}"
+    "{min-quality | 0          | --method=lifetime: drop the lifetimes below this quality (0..1, LifetimeEstimator::process()); those events count as without a lifetime}";
 
 // --sensor-set: the numeric SimulatorSettings fields by name.
 void applySimulatorSetting(SimulatorSettings& s, const std::string& name, double value)
@@ -119,6 +122,11 @@ int main(int argc, char** argv)
         o.sensorSettings = cmd.get<std::string>("sensor-set");
         o.filter = cmd.get<std::string>("filter");
         o.filterSettings = cmd.get<std::string>("filter-set");
+        o.minQuality = cmd.get<double>("min-quality");
+        if (!(o.minQuality >= 0 && o.minQuality <= 1))
+            throw std::runtime_error(cv::format("--min-quality=%g: must be 0..1", o.minQuality));
+        if (o.minQuality > 0 && o.method != "lifetime")
+            throw std::runtime_error("--min-quality: only with --method=lifetime (the matchers' lifetimes have no quality)");
         if (o.method != "lifetime" && o.method != "none" && !StereoMethod::known(o.method))
             throw std::runtime_error("--method=" + o.method + ": available methods: coupled, decoupled, fixed, sgbm, lifetime, none");
         if (!utils::fs::createDirectories(o.output))
@@ -161,7 +169,7 @@ int main(int argc, char** argv)
             method.reset(new NoEstimate());
         }
         else if (o.method == "lifetime")
-            method.reset(new Lifetime(size, o.settings));
+            method.reset(new Lifetime(size, o.settings, o.minQuality));
         else
             method.reset(new Matcher(size, o.method, o.windowMs * 1000, o.settings));
         MethodOutput estimate;

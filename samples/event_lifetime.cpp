@@ -3,13 +3,15 @@
 //
 //   event_lifetime [FILE | --scene=NAME] [--camera=0|1] [--frame-ms=10] [--every-ms=50] [--csv=FILE]
 //                  [--output=DIR] [--sensor=WxH|NAME] [--one-based] [--no-prediction] [--max-ms=T] [--set=NAME=VALUE,...]
+//                  [--min-quality=Q]
 //
 // Pictures DIR/active_NNNNN.png: left, the events alive at that instant (each lives from its timestamp for
 // its lifetime: the sharp edge image); right, all events of the last --frame-ms (the fixed window).
-// --csv writes every event: t,x,y,p,lifetime_us,vx,vy,status (status: 0 noise, 1 fitted, 2 predicted).
+// --csv writes every event: t,x,y,p,lifetime_us,vx,vy,status,quality (status: 0 noise, 1 fitted, 2 predicted;
+// quality: how far the lifetime can be trusted, LifetimeEstimator::process()).
 // Without FILE it simulates the "moving_line" scene. Progress bar on stderr. At the end it prints the
 // LifetimeArrivalCheck: how many lifetimes the edges really took to reach the next pixel (about 1 when the
-// lifetimes agree with the recording; no ground truth needed).
+// lifetimes agree with the recording; no ground truth needed), over the lifetimes of at least --min-quality.
 
 #include <opencv2/event.hpp>
 #include <opencv2/core/utils/filesystem.hpp>  // after a core header: it needs CV_EXPORTS
@@ -43,7 +45,8 @@ const char* const keys =
     "{sensor        |                 | sensor size WxH or a name (DVS128, DAVIS240, DAVIS346) when the format has none}"
     "{one-based     | false           | text recordings count pixels from 1}"
     "{no-prediction | false           | fit a plane for every event (no prediction shortcut)}"
-    "{set           |                 | estimator parameters NAME=VALUE, comma separated (FileStorage names, e.g. inlierDistance=0,windowSize=7)}";
+    "{set           |                 | estimator parameters NAME=VALUE, comma separated (FileStorage names, e.g. inlierDistance=0,windowSize=7)}"
+    "{min-quality   | 0               | the lifetime check only over lifetimes of at least this quality (0..1; 0: all)}";
 
 }  // namespace
 
@@ -62,6 +65,9 @@ int main(int argc, char** argv)
         const double frameMs = cmd.get<double>("frame-ms"), everyMs = cmd.get<double>("every-ms"),
                      maxMs = cmd.get<double>("max-ms");
         const bool prediction = !cmd.has("no-prediction");
+        const double minQuality = cmd.get<double>("min-quality");
+        if (!(minQuality >= 0 && minQuality <= 1))
+            throw std::runtime_error(format("--min-quality=%g: must be 0..1", minQuality));
         Size sensor;
         if (cmd.has("sensor"))
             sensor = parseSensorSize(cmd.get<std::string>("sensor"));
@@ -92,12 +98,12 @@ int main(int argc, char** argv)
             csv = std::fopen(csvPath.c_str(), "w");
             if (!csv)
                 throw std::runtime_error(csvPath + ": cannot create");
-            std::fprintf(csv, "t,x,y,p,lifetime_us,vx,vy,status\n");
+            std::fprintf(csv, "t,x,y,p,lifetime_us,vx,vy,status,quality\n");
         }
         const double first = cap.get(EVENT_CAP_PROP_FIRST_TIMESTAMP_US);
         std::deque<Event> recent;  // events of the last frameMs, for the fixed-window picture
         std::vector<Event> packet;
-        int64 pictures = 0, processed = 0;
+        int64 pictures = 0, processed = 0, withLifetime = 0, trusted = 0;
         SampleProgress progress;
         const int zoom = samplePictureZoom(size);
         const int64 t0 = getTickCount();
@@ -117,14 +123,18 @@ int main(int argc, char** argv)
                     continue;
                 Vec2f flow;
                 int status;
-                const float lifetime = est->processEvent(e, flow, status);
+                float quality;
+                const float lifetime = est->processEvent(e, flow, status, quality);
+                const bool kept = lifetime > 0 && quality >= minQuality;
+                withLifetime += lifetime > 0;
+                trusted += kept;
                 checked.push_back(e);
-                checkedLifetimes.push_back(lifetime);
+                checkedLifetimes.push_back(kept ? lifetime : 0.f);  // a dropped lifetime claims nothing
                 checkedFlow.push_back(flow);
                 processed++;
                 if (csv)
-                    std::fprintf(csv, "%lld,%d,%d,%d,%.1f,%.2f,%.2f,%d\n", (long long)e.t, e.x, e.y, e.p, lifetime,
-                                 flow[0], flow[1], status);
+                    std::fprintf(csv, "%lld,%d,%d,%d,%.1f,%.2f,%.2f,%d,%.3f\n", (long long)e.t, e.x, e.y, e.p, lifetime,
+                                 flow[0], flow[1], status, quality);
                 recent.push_back(e);
             }
             check->update(checked, checkedLifetimes, checkedFlow);
@@ -165,6 +175,9 @@ int main(int argc, char** argv)
                       << outsideEventsWarning(outside, size.width, size.height, cap.getBackendName() == "TEXT",
                                               cmd.has("one-based"), touchesZero) << "\n";
         // No ground truth needed: lifetimes that agree with the recording give a median near 1.
+        if (minQuality > 0)
+            std::cout << format("quality >= %g: %lld of %lld lifetimes (%.1f %%)\n", minQuality, (long long)trusted,
+                                (long long)withLifetime, 100.0 * trusted / std::max<int64>(1, withLifetime));
         std::cout << format("lifetime check: the edge reached the next pixel after %.2f lifetimes (median; quartiles "
                             "%.2f / %.2f) over %.0f events\n", check->getRatioQuantile(0.5),
                             check->getRatioQuantile(0.25), check->getRatioQuantile(0.75), check->getSampleCount());

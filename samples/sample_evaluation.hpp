@@ -102,12 +102,13 @@ private:
     std::unique_ptr<StereoMethod> unfiltered_;
 };
 
-// Lifetime per camera (LifetimeEstimator, plane fitting); no disparity.
+// Lifetime per camera (LifetimeEstimator, plane fitting); no disparity. Lifetimes of a quality below minQuality
+// are dropped (0: the event counts as one without a lifetime).
 class Lifetime CV_FINAL : public Method
 {
 public:
-    Lifetime(Size size, const std::string& settings)
-        : est_{ LifetimeEstimator::create(size), LifetimeEstimator::create(size) }
+    Lifetime(Size size, const std::string& settings, double minQuality = 0)
+        : est_{ LifetimeEstimator::create(size), LifetimeEstimator::create(size) }, minQuality_(minQuality)
     {
         for (const Ptr<LifetimeEstimator>& est : est_)
             applyAlgorithmSettings(est, settings, "--set", "lifetime estimator");
@@ -121,12 +122,15 @@ public:
         {
             Vec2f flow;
             int status;
-            out.lifetime[i] = est_[window[i].camera]->processEvent(window[i], flow, status);
+            float quality;
+            const float lifetime = est_[window[i].camera]->processEvent(window[i], flow, status, quality);
+            out.lifetime[i] = quality >= minQuality_ ? lifetime : 0.f;
         }
     }
 
 private:
     Ptr<LifetimeEstimator> est_[2];
+    double minQuality_;
 };
 
 // No estimate at all: --method=none evaluates a --filter alone.

@@ -272,6 +272,34 @@ for pair in "format_samples/aestream_davis346.aedat4:DAVIS346 sample (aestream, 
     "event_lifetime $file $extra, inlierDistance=0 and the defaults: the lifetime check"
 done
 
+# The lifetimes kept at quality >= 0.75 on every real recording and the check over them (doc/lifetime.md's
+# quality table).
+for pair in "format_samples/aestream_davis346.aedat4:DAVIS346 sample (aestream)" \
+            "stereo_dvs128_tum/Fan_disp8.dat:TUM Fan:--sensor=DVS128" \
+            "stereo_dvs128_tum/pendulum_left_30cm_2.tsv.txt:TUM pendulum:--sensor=DVS128" \
+            "stereo_dvs128_tum/movingPersons.dat:TUM movingPersons:--sensor=DVS128 --one-based" \
+            "format_samples/tonic_sample_dvxplorer.aedat4:DVXplorer sample (tonic)"; do
+  IFS=: read -r file label extra <<< "$pair"
+  kept=$("$samples/event_lifetime" "$shared/$file" $extra --min-quality=0.75 --output="$work/lifetime" 2> /dev/null \
+    | sed -n 's/^quality >= 0.75: [0-9]* of [0-9]* lifetimes (\([0-9.]*\) %)$/\1/p')
+  expect doc/lifetime.md "| $label | $kept % | $(arrival "$shared/$file" $extra --min-quality=0.75) |" \
+    "event_lifetime $file $extra --min-quality=0.75: lifetimes kept, the lifetime check"
+done
+# The simulator's scenes against their true lifetimes at quality 0, 0.75 and 0.8 (the same table's first part):
+# "median % (events)".
+qualityCell() {  # qualityCell SCENE Q
+  "$samples/event_evaluate" --scene="$1" --duration-ms=1000 --method=lifetime --min-quality="$2" \
+    --output="$work/quality" 2> /dev/null | tail -1 | sed -n 's/^lifetime median relative error \([0-9.]*\) %, \([0-9]*\) of [0-9]* events with a lifetime.*/\1 \2/p'
+}
+for scene in boxes_pair walking_pair cluttered walking; do
+  line=""
+  for q in 0 0.75 0.8; do
+    read -r error events < <(qualityCell $scene $q)
+    line="$line | $(decimal "$error") % ($(thousands "$events"))"
+  done
+  expectProse doc/lifetime.md "$line |" "event_evaluate --scene=$scene --duration-ms=1000 --method=lifetime --min-quality=0 / 0.75 / 0.8"
+done
+
 # Which TUM files count pixels from 1 (doc/reading_recordings.md).
 "$samples/event_info" "$tum/movingPersons.dat" "$tum/movingPersonFaraway.dat" "$tum/Fan_disp8.dat" > "$work/info.txt"
 ranges=$(sed -n 's/^  pixels:    //p' "$work/info.txt" | tr '\n' ';')

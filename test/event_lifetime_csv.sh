@@ -8,7 +8,7 @@ sample=$1
 work=$2
 rm -rf "$work" && mkdir -p "$work"
 "$sample" --scene=moving_line --output="$work" --csv="$work/events.csv" --max-ms=300 > "$work/stdout.txt" 2> "$work/stderr.txt"
-head -1 "$work/events.csv" | grep -qx "t,x,y,p,lifetime_us,vx,vy,status" || { echo "bad CSV header"; exit 1; }
+head -1 "$work/events.csv" | grep -qx "t,x,y,p,lifetime_us,vx,vy,status,quality" || { echo "bad CSV header"; exit 1; }
 rows=$(($(wc -l < "$work/events.csv") - 1))
 [ "$rows" -gt 10000 ] || { echo "only $rows events"; exit 1; }
 median=$(awk -F, 'NR > 1 && $8 != 0 { print $5 }' "$work/events.csv" | sort -n | awk '{ v[NR] = $1 } END { print v[int((NR + 1) / 2)] }')

@@ -25,6 +25,7 @@ struct Prediction
 {
     float a = 0, b = 0;   // time-surface gradient [ms/px]
     int64 t = 0;          // predicted arrival [us]
+    float quality = 0;    // the quality of the lifetime the plane gives (0: passed on by a stereo match)
     bool valid = false;
 };
 
@@ -33,7 +34,8 @@ class LifetimeEstimatorImpl CV_FINAL : public RowBandLifetimeEstimator
 public:
     explicit LifetimeEstimatorImpl(Size size) { setSensorSize(size); }
 
-    void process(InputArray events, OutputArray lifetimes, OutputArray flow, OutputArray status) CV_OVERRIDE
+    void process(InputArray events, OutputArray lifetimes, OutputArray flow, OutputArray status,
+                 OutputArray quality) CV_OVERRIDE
     {
         Mat_<Event> ev = getEventMat(events);
         const int n = (int)ev.total();
@@ -41,11 +43,14 @@ public:
         Mat_<float> lt = lifetimes.getMat();
         Mat_<float> fl = optionalOutput<float>(flow, n, 2);
         Mat_<uchar> st = optionalOutput<uchar>(status, n);
+        Mat_<float> q = optionalOutput<float>(quality, n);
         for (int i = 0; i < n; i++)
         {
             Vec2f v;
             int s;
-            lt(i) = processEvent(ev(i), v, s);
+            lt(i) = estimate(ev(i), nullptr, true, v, s, own_);
+            if (!q.empty())
+                q(i) = own_.quality;
             if (!fl.empty())
             {
                 fl(i, 0) = v[0];
@@ -59,6 +64,13 @@ public:
     float processEvent(const Event& e, Vec2f& flow, int& status) CV_OVERRIDE
     {
         return processEvent(e, flow, status, own_);
+    }
+
+    float processEvent(const Event& e, Vec2f& flow, int& status, float& quality) CV_OVERRIDE
+    {
+        const float lifetime = processEvent(e, flow, status, own_);
+        quality = own_.quality;
+        return lifetime;
     }
 
     float processEvent(const Event& e, Vec2f& flow, int& status, LifetimeScratch& scratch) CV_OVERRIDE
@@ -248,15 +260,17 @@ private:
         const int p = e.p ? 1 : 0;
         const size_t idx = index(e.x, e.y, p);
         double a = 0, b = 0;
+        float quality = 0;
         status = LIFETIME_NOISE;
         Prediction& pred = predictions_[idx];
         if (usePrediction_ && pred.valid && std::abs(timeDifference(e.t, pred.t)) <= predictionTolerance_)
         {
             a = pred.a;
             b = pred.b;
+            quality = pred.quality;
             status = LIFETIME_PREDICTED;
         }
-        else if (fit(e, p, pred, scratch, a, b))
+        else if (fit(e, p, pred, scratch, a, b, quality))
             status = LIFETIME_FITTED;
         pred.valid = false;  // consumed (or stale)
         surface_[idx] = e.t;
@@ -271,16 +285,21 @@ private:
             lifetime = matched.first;
             flow = matched.second;
             status = LIFETIME_MATCHED;
+            quality = 0;
             predictFromFlow(e, p, lifetime, flow);
         }
         else if (plane)
         {
             lifetime = (float)(1000.0 * std::sqrt(g2));  // |g| ms -> us
             flow = Vec2f((float)(1000.0 * a / g2), (float)(1000.0 * b / g2));  // g / |g|^2 px/ms -> px/s
-            predictNeighbour(e, p, a, b);
+            predictNeighbour(e, p, a, b, quality);
         }
         else
+        {
             status = LIFETIME_NOISE;
+            quality = 0;
+        }
+        scratch.quality = quality;
         scratch.counts[status]++;
         Active& act = active_[(size_t)e.y * size_.width + e.x];
         act.t = e.t;
@@ -336,7 +355,8 @@ private:
     }
 
     // RANSAC + refit. On success, (a, b) is the time-surface gradient [ms/px].
-    bool fit(const Event& e, int p, const Prediction& pred, LifetimeScratch& scratch, double& a, double& b)
+    bool fit(const Event& e, int p, const Prediction& pred, LifetimeScratch& scratch, double& a, double& b,
+             float& quality)
     {
         const int r = window_ / 2;
         const size_t capacity = (size_t)window_ * window_;
@@ -456,7 +476,46 @@ private:
             return false;
         a = sol(0);
         b = sol(1);
+        quality = planeQuality(px, py, pt, m, bestA, bestB, bestThreshold, sol, a, b, count);
         return true;
+    }
+
+    // The quality of a refitted plane's lifetime: 1 / (1 + e + 1 / (n - 2)) for its n inliers (the current event
+    // included) and e, the lifetime's relative standard error from the refit's residuals (the plain least squares'
+    // covariance s^2 (A^T A)^-1 along the gradient); 1 / (n - 2) for the few points a small fit rests on. Three
+    // points or fewer leave no residual to judge by: 0.
+    static float planeQuality(const double* px, const double* py, const double* pt, int m, double hypothesisA,
+                              double hypothesisB, double threshold, const Eigen::Vector3d& plane, double a, double b,
+                              int count)
+    {
+        const double g2 = a * a + b * b;
+        if (count <= 3 || !(g2 > 0))
+            return 0.f;
+        double rss = plane(2) * plane(2);  // the current event, at the origin
+        double sxx = 0, sxy = 0, sx = 0, syy = 0, sy = 0;
+        for (int i = 0; i < m; i++)
+            if (std::abs(hypothesisA * px[i] + hypothesisB * py[i] - pt[i]) <= threshold)
+            {
+                const double r = a * px[i] + b * py[i] + plane(2) - pt[i];
+                rss += r * r;
+                sxx += px[i] * px[i];
+                sxy += px[i] * py[i];
+                sx += px[i];
+                syy += py[i] * py[i];
+                sy += py[i];
+            }
+        Eigen::Matrix3d normal;
+        normal << sxx, sxy, sx, sxy, syy, sy, sx, sy, (double)count;
+        bool invertible = false;
+        Eigen::Matrix3d inverse;
+        normal.computeInverseWithCheck(inverse, invertible);
+        if (!invertible)
+            return 0.f;  // inliers on one line: the plane is the regularisation's, not theirs
+        const double s2 = rss / (count - 3);
+        const double variance = s2 * (a * a * inverse(0, 0) + 2 * a * b * inverse(0, 1) + b * b * inverse(1, 1)) / g2;
+        if (!(variance >= 0) || !std::isfinite(variance))
+            return 0.f;
+        return (float)(1.0 / (1.0 + std::sqrt(variance / g2) + 1.0 / (count - 2)));
     }
 
     // The neighbour's prediction from a lifetime and flow obtained elsewhere (a stereo match).
@@ -467,12 +526,12 @@ private:
         {
             // Gradient g = v / |v|^2, with v in px/ms: the plane that produced this flow.
             const double vx = flow[0] * 1e-3, vy = flow[1] * 1e-3, v2ms = v2 * 1e-6;
-            predictNeighbour(e, p, vx / v2ms, vy / v2ms);
+            predictNeighbour(e, p, vx / v2ms, vy / v2ms, 0.f);
         }
     }
 
     // Stores the plane at the 8-neighbour the edge moves to, with the time it should get there.
-    void predictNeighbour(const Event& e, int p, double a, double b)
+    void predictNeighbour(const Event& e, int p, double a, double b, float quality)
     {
         Point next;  // the edge moves along the gradient
         if (!neighbourAlongMotion(a, b, next))
@@ -489,6 +548,7 @@ private:
         q.b = (float)b;
         const int64 step = (int64)std::llround(stepUs);
         q.t = step >= 0 ? timeAfter(e.t, step) : timeBefore(e.t, -step);
+        q.quality = quality;
         q.valid = true;
     }
 

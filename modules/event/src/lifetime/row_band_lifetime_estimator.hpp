@@ -24,6 +24,7 @@ struct LifetimeScratch
     std::vector<double> a, b, threshold;
     std::vector<int> inliers;
     double counts[4] = { 0, 0, 0, 0 };
+    float quality = 0;  // the last event's lifetime quality (LifetimeEstimator::process)
 };
 
 /** A stereo match's lifetime and flow, asked for only when needed (a matched window's median costs a gather and

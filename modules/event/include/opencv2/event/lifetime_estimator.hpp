@@ -53,13 +53,21 @@ public:
     (use one estimator per camera).
     @param lifetimes output N x 1 CV_32F, microseconds; 0 for noise.
     @param flow output N x 2 CV_32F normal optical flow (vx, vy) [px/s]; 0 for noise.
-    @param status output N x 1 CV_8U LifetimeStatus. */
+    @param status output N x 1 CV_8U LifetimeStatus.
+    @param quality output N x 1 CV_32F, how far each lifetime can be trusted, 0..1: 1 / (1 + e + 1 / (n - 2))
+    for a plane refitted on n inliers (the event included) whose least squares put the lifetime's relative
+    standard error at e (from the residuals). A predicted event takes the quality of the plane that predicted
+    it. 0: noise, a plane passed on by a stereo match, or one with no residual to judge it by (three inliers,
+    or all on one line). Higher is better; it ranks the lifetimes, it is not a probability. */
     CV_WRAP virtual void process(InputArray events, OutputArray lifetimes, OutputArray flow = noArray(),
-                                 OutputArray status = noArray()) = 0;
+                                 OutputArray status = noArray(), OutputArray quality = noArray()) = 0;
 
     /** @brief The same for one event (the incremental API; identical results to process()).
     @return the lifetime [us], 0 for noise. */
     virtual float processEvent(const Event& event, Vec2f& flow, int& status) = 0;
+
+    /** @brief The same, with the lifetime's quality (as process() gives it). */
+    virtual float processEvent(const Event& event, Vec2f& flow, int& status, float& quality) = 0;
 
     /** @brief Records an event whose lifetime was obtained elsewhere (a stereo match; counted as
     LIFETIME_MATCHED): it enters the surface and the active-event image, and a non-zero @p flow [px/s]
