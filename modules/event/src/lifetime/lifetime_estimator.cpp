@@ -461,8 +461,9 @@ private:
                 st += t;
                 count++;
             }
-        Eigen::Matrix3d ata;
-        ata << sxx, sxy, sx, sxy, syy, sy, sx, sy, (double)count;
+        Eigen::Matrix3d normal;
+        normal << sxx, sxy, sx, sxy, syy, sy, sx, sy, (double)count;
+        Eigen::Matrix3d ata = normal;
         Eigen::Vector3d atb(sxt, syt, st);
         if (pred.valid && lambda_ > 0)
         {
@@ -476,7 +477,7 @@ private:
             return false;
         a = sol(0);
         b = sol(1);
-        quality = planeQuality(px, py, pt, m, bestA, bestB, bestThreshold, sol, a, b, count);
+        quality = planeQuality(px, py, pt, m, bestA, bestB, bestThreshold, normal, sol, count);
         return true;
     }
 
@@ -484,28 +485,21 @@ private:
     // included) and e, the lifetime's relative standard error from the refit's residuals (the plain least squares'
     // covariance s^2 (A^T A)^-1 along the gradient); 1 / (n - 2) for the few points a small fit rests on. Three
     // points or fewer leave no residual to judge by: 0.
+    // `normal` is the unregularised A^T A of the inliers, `plane` the refit (a, b, c).
     static float planeQuality(const double* px, const double* py, const double* pt, int m, double hypothesisA,
-                              double hypothesisB, double threshold, const Eigen::Vector3d& plane, double a, double b,
-                              int count)
+                              double hypothesisB, double threshold, const Eigen::Matrix3d& normal,
+                              const Eigen::Vector3d& plane, int count)
     {
-        const double g2 = a * a + b * b;
+        const double a = plane(0), b = plane(1), g2 = a * a + b * b;
         if (count <= 3 || !(g2 > 0))
             return 0.f;
         double rss = plane(2) * plane(2);  // the current event, at the origin
-        double sxx = 0, sxy = 0, sx = 0, syy = 0, sy = 0;
         for (int i = 0; i < m; i++)
             if (std::abs(hypothesisA * px[i] + hypothesisB * py[i] - pt[i]) <= threshold)
             {
                 const double r = a * px[i] + b * py[i] + plane(2) - pt[i];
                 rss += r * r;
-                sxx += px[i] * px[i];
-                sxy += px[i] * py[i];
-                sx += px[i];
-                syy += py[i] * py[i];
-                sy += py[i];
             }
-        Eigen::Matrix3d normal;
-        normal << sxx, sxy, sx, sxy, syy, sy, sx, sy, (double)count;
         bool invertible = false;
         Eigen::Matrix3d inverse;
         normal.computeInverseWithCheck(inverse, invertible);
