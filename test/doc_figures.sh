@@ -262,27 +262,20 @@ arrival() {  # arrival FILE ARGS...: event_lifetime's check line as the table wr
     | sed -n 's/^lifetime check: the edge reached the next pixel after \([0-9.]*\) lifetimes (median; quartiles \([0-9.]*\) \/ \([0-9.]*\)) over.*/\1 \2 \3/p' \
     | awk '{ for (i = 1; i <= 3; i++) v[i] = sprintf($i < 10 ? "%.2f" : "%.1f", $i); print v[1] " (" v[2] " / " v[3] ")" }'
 }
-for pair in "format_samples/aestream_davis346.aedat4:DAVIS346 sample (aestream, 346 x 260)" \
-            "stereo_dvs128_tum/Fan_disp8.dat:TUM Fan (DVS128, \`--sensor=DVS128\`):--sensor=DVS128" \
-            "stereo_dvs128_tum/pendulum_left_30cm_2.tsv.txt:TUM pendulum (DVS128):--sensor=DVS128" \
-            "stereo_dvs128_tum/movingPersons.dat:TUM movingPersons (DVS128, \`--one-based\`):--sensor=DVS128 --one-based" \
-            "format_samples/tonic_sample_dvxplorer.aedat4:DVXplorer sample (tonic)"; do
-  IFS=: read -r file label extra <<< "$pair"
-  expectPlain doc/lifetime.md "| $label | $(arrival "$shared/$file" $extra --set=inlierDistance=0) | $(arrival "$shared/$file" $extra) |" \
+# Each recording in both tables: the check at inlierDistance=0 and at the defaults, and in the quality table
+# the lifetimes kept at quality >= 0.75 with the check over them. Entries: FILE:OPTIONS:check-table label:
+# quality-table label.
+for entry in "format_samples/aestream_davis346.aedat4::DAVIS346 sample (aestream, 346 x 260):DAVIS346 sample (aestream)" \
+             "stereo_dvs128_tum/Fan_disp8.dat:--sensor=DVS128:TUM Fan (DVS128, \`--sensor=DVS128\`):TUM Fan" \
+             "stereo_dvs128_tum/pendulum_left_30cm_2.tsv.txt:--sensor=DVS128:TUM pendulum (DVS128):TUM pendulum" \
+             "stereo_dvs128_tum/movingPersons.dat:--sensor=DVS128 --one-based:TUM movingPersons (DVS128, \`--one-based\`):TUM movingPersons" \
+             "format_samples/tonic_sample_dvxplorer.aedat4::DVXplorer sample (tonic):DVXplorer sample (tonic)"; do
+  IFS=: read -r file extra checkLabel qualityLabel <<< "$entry"
+  expectPlain doc/lifetime.md "| $checkLabel | $(arrival "$shared/$file" $extra --set=inlierDistance=0) | $(arrival "$shared/$file" $extra) |" \
     "event_lifetime $file $extra, inlierDistance=0 and the defaults: the lifetime check"
-done
-
-# The lifetimes kept at quality >= 0.75 on every real recording and the check over them (doc/lifetime.md's
-# quality table).
-for pair in "format_samples/aestream_davis346.aedat4:DAVIS346 sample (aestream)" \
-            "stereo_dvs128_tum/Fan_disp8.dat:TUM Fan:--sensor=DVS128" \
-            "stereo_dvs128_tum/pendulum_left_30cm_2.tsv.txt:TUM pendulum:--sensor=DVS128" \
-            "stereo_dvs128_tum/movingPersons.dat:TUM movingPersons:--sensor=DVS128 --one-based" \
-            "format_samples/tonic_sample_dvxplorer.aedat4:DVXplorer sample (tonic)"; do
-  IFS=: read -r file label extra <<< "$pair"
   kept=$("$samples/event_lifetime" "$shared/$file" $extra --min-quality=0.75 --output="$work/lifetime" 2> /dev/null \
     | sed -n 's/^quality >= 0.75: [0-9]* of [0-9]* lifetimes (\([0-9.]*\) %)$/\1/p')
-  expect doc/lifetime.md "| $label | $kept % | $(arrival "$shared/$file" $extra --min-quality=0.75) |" \
+  expect doc/lifetime.md "| $qualityLabel | $kept % | $(arrival "$shared/$file" $extra --min-quality=0.75) |" \
     "event_lifetime $file $extra --min-quality=0.75: lifetimes kept, the lifetime check"
 done
 # The simulator's scenes against their true lifetimes at quality 0, 0.75 and 0.8 (the same table's first part):
