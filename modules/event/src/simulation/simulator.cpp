@@ -12,6 +12,7 @@
 #include "opencv2/calib3d.hpp"
 #include "opencv2/imgproc.hpp"
 
+#include <algorithm>
 #include <array>
 #include <cstdio>
 #include <limits>
@@ -132,6 +133,9 @@ public:
         if (flickering_ && !(s.flickerFrequencyHz > 0))
             CV_Error_(Error::StsBadArg, ("StereoEventSimulator: flickerFrequencyHz is %g; a flickering plane needs it > 0",
                                          s.flickerFrequencyHz));
+        for (size_t k = 0; k < planes.size(); k++)
+            if (!isStatic(planes[k]))
+                movingPlanes_.push_back((int)k);
         const int n = s.resolution.area();
         RNG latencyRng((uint64)(s.seed * 7919 + 101)), hotPixelRng((uint64)(s.seed * 7919 + 202));
         delayed_ = s.latencyUs > 0 || s.latencySigmaUs > 0 || s.jitterUs > 0 || s.extraLatencyUs != Vec4d::all(0);
@@ -157,6 +161,8 @@ public:
                 for (int i = 0; i < n; i++)
                     if (hotPixelRng.uniform(0.0, 1.0) < s.hotPixelShare)
                         hotPixels_[c].push_back(std::make_pair(i, hotPixelRng.uniform(0, 2)));
+            if (!flickering_)
+                render(c, 0.0, staticScene_[c], true);
             render(c, 0.0, cur_[c]);
             ref_[c] = cur_[c].logI;
             if (flickering_)
@@ -320,8 +326,18 @@ private:
         return Size(k, k);
     }
 
+    // A plane whose pose is the same at every time (velocity * t and the rotation by angularVelocity * t are
+    // exact zeros): its rays' results are too, bit for bit.
+    static bool isStatic(const SimulatedPlane& p)
+    {
+        return p.velocity == Vec3d::all(0) && p.angularVelocity == Vec3d::all(0) && p.swingAmplitude == 0;
+    }
+
     // Ray-casts one camera at time t: log intensity, depth, and the image motion of the visible point.
-    void render(int camera, double tUs, Render& out) const
+    // @p staticOnly: the static planes alone, sharp (staticScene_). Otherwise a pixel that no moving plane can
+    // reach takes its static result as it is, unless the scene flickers (its intensities change with time): the
+    // loop below would only compute it again.
+    void render(int camera, double tUs, Render& out, bool staticOnly = false) const
     {
         const Size sz = s_.resolution;
         const double f = s_.focalLength, cx = 0.5 * (sz.width - 1), cy = 0.5 * (sz.height - 1);
@@ -345,6 +361,25 @@ private:
         if (flickering_)
             out.flickerLogI.assign(n, 0.f);
         const double background = std::log(s_.backgroundIntensity);
+        const Render& still = staticScene_[camera];
+        const bool reuseStatic = !staticOnly && !flickering_ && !still.logI.empty();
+        // The moving planes' boxes together: most rays miss it after four comparisons.
+        PlaneInView moving;
+        moving.bounded = true;
+        for (int k : movingPlanes_)
+        {
+            const PlaneInView& view = views[(size_t)k];
+            moving.bounded = moving.bounded && view.bounded;
+            for (int j = 0; j < 2; j++)
+            {
+                moving.lo[j] = std::min(moving.lo[j], view.lo[j]);
+                moving.hi[j] = std::max(moving.hi[j], view.hi[j]);
+            }
+        }
+        const auto movingMayHit = [&](const Vec3d& d) {
+            return moving.mayHit(d) &&
+                   std::any_of(movingPlanes_.begin(), movingPlanes_.end(), [&](int k) { return views[(size_t)k].mayHit(d); });
+        };
         for (int y = 0; y < sz.height; y++)
         {
             for (int x = 0; x < sz.width; x++)
@@ -356,13 +391,22 @@ private:
                     const double rx = x - cx, ry = y - cy - s_.rightRowOffset;
                     d = Vec3d((cr * rx + sr * ry) / f, (-sr * rx + cr * ry) / f, 1.0);
                 }
+                const int i = y * sz.width + x;
+                if (reuseStatic && !movingMayHit(d))
+                {
+                    out.logI[i] = still.logI[i];
+                    out.depth[i] = still.depth[i];
+                    out.flowX[i] = still.flowX[i];
+                    out.flowY[i] = still.flowY[i];
+                    continue;
+                }
                 double best = std::numeric_limits<double>::infinity(), hitA = 0, hitB = 0;
                 int hit = -1;
                 Vec3d point;
                 for (size_t k = 0; k < planes_.size(); k++)
                 {
                     const PlaneInView& view = views[k];
-                    if (!view.mayHit(d))
+                    if (!view.mayHit(d) || (staticOnly && !isStatic(planes_[k])))
                         continue;
                     const PlanePose& q = poses[k];
                     const double denom = q.n.dot(d);
@@ -381,7 +425,6 @@ private:
                     hitA = a;
                     hitB = b;
                 }
-                const int i = y * sz.width + x;
                 if (hit < 0)
                 {
                     out.logI[i] = (float)background;
@@ -415,7 +458,7 @@ private:
                 }
             }
         }
-        if (s_.blurSigmaPx > 0)
+        if (s_.blurSigmaPx > 0 && !staticOnly)
         {
             // The lens: blur the linear intensity, then back to log (the depth and motion stay the sharp ones).
             Mat logI(sz, CV_32F, out.logI.data()), linear;
@@ -445,7 +488,8 @@ private:
         double maxFlow = 0;
         for (int c = 0; c < 2; c++)
             for (int i = 0; i < sz.area(); i++)
-                maxFlow = std::max(maxFlow, (double)std::hypot(cur_[c].flowX[i], cur_[c].flowY[i]));
+                if (cur_[c].flowX[i] != 0 || cur_[c].flowY[i] != 0)  // most pixels see still planes
+                    maxFlow = std::max(maxFlow, (double)std::hypot(cur_[c].flowX[i], cur_[c].flowY[i]));
         // Sized on the current motion; accelerations within one step are small for the rigid scenes simulated.
         // Whole microseconds: each step then owns the integer timestamps [t0, t1), so sorting a step's events
         // by (t, camera, y, x) orders the whole stream that way (left first on equal times).
@@ -694,6 +738,8 @@ private:
     bool delayed_ = false;
     bool flickering_ = false;  // some plane flickers
     Render cur_[2], next_[2];
+    Render staticScene_[2];         // each camera's sharp render of the static planes alone (render(staticOnly))
+    std::vector<int> movingPlanes_;  // indices of the planes that are not static (isStatic())
     double t_ = 0, delivered_ = 0;
     std::vector<SimulatedEvent> pending_;  // simulated, not yet handed out; in stream order
 };
