@@ -128,6 +128,76 @@ TEST(Event_Simulator, deterministic_per_seed_and_independent_of_chunking)
     EXPECT_NE(a.size(), c.size()) << "another seed gives other thresholds and noise";
 }
 
+TEST(Event_Simulator, a_card_crossing_a_still_wall_is_drawn_where_it_is_and_uncovers_the_wall_behind_it)
+{
+    // A still wall's pixels are ray-cast once and reused wherever no moving plane can reach them: a card sliding
+    // across it must show where it is at each step, and the wall must come back, as it was, where it has passed.
+    SimulatorSettings s;
+    s.blurSigmaPx = 0;
+    SimulatedPlane wall;
+    wall.center = Vec3d(0, 0, 4.0);
+    wall.halfSize = Vec2d(10, 10);
+    wall.cellSize = 0.1;
+    wall.contrast = 0.5;
+    SimulatedPlane card;  // 0.2 x 0.4 m at 1 m, sliding right at 1 m/s
+    card.center = Vec3d(-0.5, 0, 1.0);
+    card.halfSize = Vec2d(0.1, 0.2);
+    card.texture = TEXTURE_UNIFORM;
+    card.intensity = 0.9;
+    card.velocity = Vec3d(1.0, 0, 0);
+    Ptr<StereoEventSimulator> sim = StereoEventSimulator::create({ wall, card }, s);
+    const Size sz = s.resolution;
+    const double f = s.focalLength, cx = 0.5 * (sz.width - 1), cy = 0.5 * (sz.height - 1);
+    Mat before[2], disparityBefore[2];
+    for (int c = 0; c < 2; c++)
+    {
+        sim->renderIntensity(c, before[c]);
+        sim->renderDisparity(c, disparityBefore[c]);
+    }
+    Mat everCovered[2] = { Mat::zeros(sz, CV_8U), Mat::zeros(sz, CV_8U) };
+    int uncovered = 0;
+    std::vector<Event> ev;
+    Mat gt;
+    for (double t = 50000; t <= 800000; t += 50000)
+    {
+        ASSERT_TRUE(sim->generate(t, ev, gt));
+        const double cardX = -0.5 + 1.0 * sim->getTime() * 1e-6;
+        for (int c = 0; c < 2; c++)
+        {
+            Mat_<float> disparity, intensity;
+            sim->renderDisparity(c, disparity);
+            sim->renderIntensity(c, intensity);
+            const double origin = c == CAMERA_RIGHT ? s.baseline : 0.0;
+            // The card's columns and rows in this camera (the render may be up to a step past getTime()).
+            const double x0 = cx + f * (cardX - 0.1 - origin), x1 = cx + f * (cardX + 0.1 - origin);
+            const double y0 = cy - f * 0.2, y1 = cy + f * 0.2;
+            const double margin = 2;
+            for (int y = 0; y < sz.height; y++)
+                for (int x = 0; x < sz.width; x++)
+                {
+                    const bool inside = x > x0 + margin && x < x1 - margin && y > y0 + margin && y < y1 - margin;
+                    const bool outside = x < x0 - margin || x > x1 + margin || y < y0 - margin || y > y1 + margin;
+                    if (inside)
+                    {
+                        ASSERT_NEAR(f * s.baseline / 1.0, disparity(y, x), 1e-3) << "camera " << c << " at " << x << ", " << y;
+                        everCovered[c].at<uchar>(y, x) = 1;
+                    }
+                    else if (outside)
+                    {
+                        ASSERT_NEAR(f * s.baseline / 4.0, disparity(y, x), 1e-3) << "camera " << c << " at " << x << ", " << y;
+                        if (everCovered[c].at<uchar>(y, x) && std::abs(disparityBefore[c].at<float>(y, x) - f * s.baseline / 4.0) < 1e-3)
+                        {
+                            // Uncovered: the wall as it looked at the start (where the card was not then).
+                            ASSERT_EQ(before[c].at<float>(y, x), intensity(y, x)) << "camera " << c << " at " << x << ", " << y;
+                            uncovered++;
+                        }
+                    }
+                }
+        }
+    }
+    EXPECT_GT(uncovered, 10000) << "the card must have moved off many wall pixels it covered";
+}
+
 TEST(Event_Simulator, background_activity_rate_and_flags)
 {
     SimulatorSettings s = idealSmallSensor();
