@@ -101,8 +101,8 @@ cmake --build "$tsan" --target opencv_test_event > "$tsan.build.log" 2>&1 || { t
 echo "== sanitizers: StereoEventMatcher's row bands and the live cameras' threads under TSan"
 # Three of the eight row-band tests (a calibration that moves rows, on 4 threads; a packet cut short by a bad
 # event; cluttered COUPLED on 2, 3 and 7 threads): under TSan each runs 20-40 times slower, and these three
-# take every path of the bands (waits both ways, expiries, outside events, a failing packet). One shard per core. The live path on
+# take every path of the bands (waits both ways, expiries, outside events, a failing packet). The live path on
 # its fakes: USB callbacks on a control request's thread while the reader thread reads, the reader threads of
-# a stereo pair, their clock arming and shutdown (a few seconds).
+# a stereo pair, their clock arming and shutdown (a few seconds). One shard per core.
 TSAN_OPTIONS=halt_on_error=1 bash "$here/gtest_shards.sh" "$tsan/modules/event/opencv_test_event" --gtest_filter='StereoEventMatcher.row_bands_*:StereoEventMatcher_RowBands.give_the_results_of_one_thread_bit_for_bit/3:Event_UsbLinkDevice.*:Event_Capture_Davis.*'
 echo "== sanitizers: clean"

@@ -148,6 +148,7 @@ TEST(Event_Simulator, a_card_crossing_a_still_wall_is_drawn_where_it_is_and_unco
     Ptr<StereoEventSimulator> sim = StereoEventSimulator::create({ wall, card }, s);
     const Size sz = s.resolution;
     const double f = s.focalLength, cx = 0.5 * (sz.width - 1), cy = 0.5 * (sz.height - 1);
+    const double cardDisparity = f * s.baseline / 1.0, wallDisparity = f * s.baseline / 4.0;
     Mat before[2], disparityBefore[2];
     for (int c = 0; c < 2; c++)
     {
@@ -179,13 +180,14 @@ TEST(Event_Simulator, a_card_crossing_a_still_wall_is_drawn_where_it_is_and_unco
                     const bool outside = x < x0 - margin || x > x1 + margin || y < y0 - margin || y > y1 + margin;
                     if (inside)
                     {
-                        ASSERT_NEAR(f * s.baseline / 1.0, disparity(y, x), 1e-3) << "camera " << c << " at " << x << ", " << y;
+                        ASSERT_NEAR(cardDisparity, disparity(y, x), 1e-3) << "camera " << c << " at " << x << ", " << y;
                         everCovered[c].at<uchar>(y, x) = 1;
                     }
                     else if (outside)
                     {
-                        ASSERT_NEAR(f * s.baseline / 4.0, disparity(y, x), 1e-3) << "camera " << c << " at " << x << ", " << y;
-                        if (everCovered[c].at<uchar>(y, x) && std::abs(disparityBefore[c].at<float>(y, x) - f * s.baseline / 4.0) < 1e-3)
+                        ASSERT_NEAR(wallDisparity, disparity(y, x), 1e-3) << "camera " << c << " at " << x << ", " << y;
+                        if (everCovered[c].at<uchar>(y, x) &&
+                            std::abs(disparityBefore[c].at<float>(y, x) - wallDisparity) < 1e-3)
                         {
                             // Uncovered: the wall as it looked at the start (where the card was not then).
                             ASSERT_EQ(before[c].at<float>(y, x), intensity(y, x)) << "camera " << c << " at " << x << ", " << y;
