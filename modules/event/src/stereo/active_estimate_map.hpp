@@ -22,7 +22,7 @@ pixel, the last event's time, its own estimate and the end of that estimate's ac
 The ends and the disparities are two arrays: the scans read a row's ends, and a disparity only where one is
 active. Per ESTIMATE_BLOCK pixels of a row the latest end in the block (it only grows) lets a scan skip the
 blocks where no estimate can be active. Row bands on several threads each write their own rows. */
-class ActiveEstimateMap
+class CV_EXPORTS ActiveEstimateMap  // exported for opencv_test_event only; not public API
 {
 public:
     // Forgets every estimate and sizes the map for a sensor of `size`.
@@ -37,25 +37,17 @@ public:
     template <typename Visit>
     void forEachActive(int x0, int x1, int y0, int y1, int64 t, Visit visit) const
     {
-        x0 = std::max(0, x0);
-        x1 = std::min(size_.width - 1, x1);
-        const int block0 = x0 / ESTIMATE_BLOCK, block1 = x1 / ESTIMATE_BLOCK;
-        for (int y = std::max(0, y0); y <= std::min(size_.height - 1, y1); y++)
-        {
-            const int64* until = &until_[(size_t)y * size_.width];
-            const float* disparity = &disparity_[(size_t)y * size_.width];
-            const int64* blockUntil = &blockUntil_[(size_t)y * blocksPerRow_];
-            for (int b = block0; b <= block1; b++)
-            {
-                if (t >= blockUntil[b])
-                    continue;
-                const int xe = std::min(x1, (b + 1) * (int)ESTIMATE_BLOCK - 1);
-                for (int x = std::max(x0, b * (int)ESTIMATE_BLOCK); x <= xe; x++)
-                    if (t < until[x])
-                        visit(disparity[x]);
-            }
-        }
+        forEachLiveBlockRun(x0, x1, std::max(0, y0), y1, 1, t, [t, &visit](const int64* until, const float* disparity, int xa, int xe) {
+            for (int x = xa; x <= xe; x++)
+                if (t < until[x])
+                    visit(disparity[x]);
+        });
     }
+
+    // Adds to sum each estimate active at time t in columns [x0, x1] of rows [y0, y1] (clipped to the image) that
+    // lies within `tolerance` of `value`, row by row, left to right, and counts them in n. The same sum as
+    // forEachActive's visits would give, without a branch per pixel (the window's activity is random).
+    void sumNear(int x0, int x1, int y0, int y1, int64 t, float value, float tolerance, double& sum, int& n) const;
 
     // The disparities of the estimates active at time t within `rows` rows and `columns` columns of `centre`
     // (into `disparities`, in no particular order), their count and, when there are any, their median.
@@ -71,6 +63,25 @@ public:
 
 private:
     enum { ESTIMATE_BLOCK = 16 };
+
+    // Calls run(until, disparity, xa, xe) for each run [xa, xe] of columns [x0, x1] (clipped) in rows y0,
+    // y0 + rowStep, ... up to y1 (clipped; y0 >= 0) that lies in a block where an estimate may be active at t;
+    // until and disparity are the row's.
+    template <typename Run>
+    void forEachLiveBlockRun(int x0, int x1, int y0, int y1, int rowStep, int64 t, Run run) const
+    {
+        x0 = std::max(0, x0);
+        x1 = std::min(size_.width - 1, x1);
+        const int block0 = x0 / ESTIMATE_BLOCK, block1 = x1 / ESTIMATE_BLOCK;
+        for (int y = y0; y <= std::min(size_.height - 1, y1); y += rowStep)
+        {
+            const int64* blockUntil = &blockUntil_[(size_t)y * blocksPerRow_];
+            for (int b = block0; b <= block1; b++)
+                if (t < blockUntil[b])
+                    run(&until_[(size_t)y * size_.width], &disparity_[(size_t)y * size_.width],
+                        std::max(x0, b * (int)ESTIMATE_BLOCK), std::min(x1, (b + 1) * (int)ESTIMATE_BLOCK - 1));
+        }
+    }
     static constexpr int64 NO_ESTIMATE = std::numeric_limits<int64>::min();
 
     Size size_;

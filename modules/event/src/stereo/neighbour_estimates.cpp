@@ -115,14 +115,8 @@ float StereoEventMatcherImpl::averagedDisparity(int c, Point r, int64 t, float o
     for (int side = 0; side < (counterpartX >= 0 ? 2 : 1); side++)
     {
         const int centreX = side == 0 ? r.x : counterpartX;
-        estimates_[side == 0 ? c : 1 - c].forEachActive(centreX - radius, centreX + radius, r.y - radius, r.y + radius, t,
-                              [&](float d) {
-                                  if (std::abs(d - own) <= AVERAGING_TOLERANCE)
-                                  {
-                                      sum += d;
-                                      n++;
-                                  }
-                              });
+        estimates_[side == 0 ? c : 1 - c].sumNear(centreX - radius, centreX + radius, r.y - radius, r.y + radius, t, own,
+                                                  AVERAGING_TOLERANCE, sum, n);
     }
     return (float)(sum / n);
 }

@@ -1,0 +1,150 @@
+// This file is part of OpenCV project.
+// It is subject to the license terms in the LICENSE file found in the top-level directory
+// of this distribution and at http://opencv.org/license.html.
+
+// The neighbours' estimates as the matcher reads them: ActiveEstimateMap's windowed median and near-sum against
+// the test's own record of what it remembered (each pixel's last estimate and when it ends), the median taken
+// by std::nth_element. Windows of every size from one pixel to 51 x 51, with every row or every second or
+// third row, clipped at every border, hold from none to thousands of estimates; the disparities include
+// whole pixels, exact multiples of 1/64 px, long runs of one value and values beyond 127 px.
+
+#include "test_precomp.hpp"
+#include "stereo/active_estimate_map.hpp"
+
+namespace opencv_test { namespace {
+using namespace cv::event::detail;
+
+// What the test remembered at each pixel: the estimate and the end of its activity (none: INT64_MIN).
+struct RememberedEstimates
+{
+    Size size;
+    std::vector<int64> until;
+    std::vector<float> disparity;
+
+    explicit RememberedEstimates(Size s) : size(s), until((size_t)s.area(), std::numeric_limits<int64>::min()), disparity((size_t)s.area(), -1.f) {}
+
+    void remember(ActiveEstimateMap& map, Point r, int64 t, int64 activeFor, float d)
+    {
+        map.remember(r, t, activeFor, d);
+        const size_t i = (size_t)r.y * size.width + r.x;
+        disparity[i] = d;
+        until[i] = d < 0 ? std::numeric_limits<int64>::min() : t + activeFor;
+    }
+
+    bool active(int x, int y, int64 t) const { return t < until[(size_t)y * size.width + x]; }
+    float at(int x, int y) const { return disparity[(size_t)y * size.width + x]; }
+};
+
+// Disparities of four kinds: continuous, on a 1/64 px grid (the edges of the map's finest counts), whole pixels
+// with long runs of one value, and far ones (beyond 127 px, and 0).
+float drawDisparity(RNG& rng, int kind)
+{
+    switch (kind)
+    {
+    case 0: return rng.uniform(0.f, 40.f);
+    case 1: return 12.f + (float)rng.uniform(-64, 128) / 64.f;
+    case 2: return (float)rng.uniform(9, 12);
+    default: return rng.uniform(0, 4) == 0 ? 0.f : rng.uniform(120.f, 300.f);
+    }
+}
+
+// Fills a DAVIS240-sized map: each pixel remembered up to three times at times 0..999 (the last one counts),
+// active for 1..400 us, a tenth of them with no estimate (a negative disparity).
+void fillMap(RNG& rng, int kind, double density, ActiveEstimateMap& map, RememberedEstimates& mine)
+{
+    map.reset(mine.size);
+    for (int y = 0; y < mine.size.height; y++)
+        for (int x = 0; x < mine.size.width; x++)
+        {
+            if (rng.uniform(0., 1.) >= density)
+                continue;
+            int64 t = 0;
+            for (int k = rng.uniform(1, 4); k > 0; k--)
+            {
+                t += rng.uniform(0, 334);
+                const float d = rng.uniform(0, 10) == 0 ? -1.f : drawDisparity(rng, kind);
+                mine.remember(map, Point(x, y), t, rng.uniform(1, 401), d);
+            }
+        }
+}
+
+TEST(Event_ActiveEstimateMap, median_is_the_middle_value_of_the_active_estimates_of_the_sampled_rows)
+{
+    RNG rng(23);
+    const Size size(240, 180);
+    std::vector<float> got, expected;
+    int windowsBySize[3] = {};  // fewer than 64 estimates, 64..1024, more
+    for (int kind = 0; kind < 4; kind++)
+        for (double density : { 0.05, 0.5, 1.0 })
+        {
+            ActiveEstimateMap map;
+            RememberedEstimates mine(size);
+            fillMap(rng, kind, density, map, mine);
+            for (int trial = 0; trial < 200; trial++)
+            {
+                // Centres up to a few pixels outside the image, so that windows are clipped on every side.
+                const Point centre(rng.uniform(-3, size.width + 3), rng.uniform(-3, size.height + 3));
+                // Every fourth window 51 x 51 with every row: the most estimates one window holds.
+                const bool largest = trial % 4 == 0;
+                const int rows = largest ? 25 : rng.uniform(0, 26), columns = largest ? 25 : rng.uniform(0, 26);
+                const int step = largest ? 1 : rng.uniform(1, 4);
+                const int64 t = rng.uniform(0, 1200);
+                expected.clear();
+                for (int y = centre.y - rows; y <= centre.y + rows; y += step)
+                    for (int x = centre.x - columns; x <= centre.x + columns; x++)
+                        if (y >= 0 && y < size.height && x >= 0 && x < size.width && mine.active(x, y, t))
+                            expected.push_back(mine.at(x, y));
+                float median = -100.f;
+                const size_t n = map.sampledMedian(centre, rows, columns, step, t, got, median);
+                ASSERT_EQ(expected.size(), n);
+                ASSERT_EQ(n, got.size());
+                windowsBySize[n < 64 ? 0 : n <= 1024 ? 1 : 2]++;
+                if (n == 0)
+                    continue;
+                std::nth_element(expected.begin(), expected.begin() + (std::ptrdiff_t)(n / 2), expected.end());
+                ASSERT_EQ(expected[n / 2], median) << "kind " << kind << ", " << n << " estimates";
+                // The same estimates, in any order.
+                std::sort(expected.begin(), expected.end());
+                std::sort(got.begin(), got.end());
+                ASSERT_EQ(expected, got);
+            }
+        }
+    // The draw covers every path of the selection.
+    EXPECT_GT(windowsBySize[0], 100);
+    EXPECT_GT(windowsBySize[1], 100);
+    EXPECT_GT(windowsBySize[2], 20);
+}
+
+TEST(Event_ActiveEstimateMap, near_sum_adds_the_active_estimates_within_the_tolerance_in_row_order)
+{
+    RNG rng(29);
+    const Size size(240, 180);
+    for (int kind = 0; kind < 3; kind++)
+    {
+        ActiveEstimateMap map;
+        RememberedEstimates mine(size);
+        fillMap(rng, kind, 0.7, map, mine);
+        for (int trial = 0; trial < 300; trial++)
+        {
+            const Point centre(rng.uniform(-3, size.width + 3), rng.uniform(-3, size.height + 3));
+            const int radius = rng.uniform(0, 8);
+            const int64 t = rng.uniform(0, 1200);
+            const float value = drawDisparity(rng, kind), tolerance = 1.5f;
+            double expectedSum = value, sum = value;
+            int expectedCount = 1, count = 1;
+            for (int y = centre.y - radius; y <= centre.y + radius; y++)
+                for (int x = centre.x - radius; x <= centre.x + radius; x++)
+                    if (y >= 0 && y < size.height && x >= 0 && x < size.width && mine.active(x, y, t) &&
+                        std::abs(mine.at(x, y) - value) <= tolerance)
+                    {
+                        expectedSum += mine.at(x, y);
+                        expectedCount++;
+                    }
+            map.sumNear(centre.x - radius, centre.x + radius, centre.y - radius, centre.y + radius, t, value, tolerance, sum, count);
+            ASSERT_EQ(expectedCount, count);
+            ASSERT_EQ(expectedSum, sum);  // the same additions in the same order: bit for bit
+        }
+    }
+}
+
+}}  // namespace
