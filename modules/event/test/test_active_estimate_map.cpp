@@ -6,10 +6,13 @@
 // the test's own record of what it remembered (each pixel's last estimate and when it ends), the median taken
 // by std::nth_element. Windows of every size from one pixel to 51 x 51, with every row or every second or
 // third row, clipped at every border, hold from none to thousands of estimates; the disparities include
-// whole pixels, exact multiples of 1/64 px, long runs of one value and values beyond 127 px.
+// whole pixels, exact multiples of 1/64 px, long runs of one value and values beyond 127 px. The scan's vector
+// kernel against its scalar reference: runs of every length up to 40 from every alignment, times at and
+// around the ends of the estimates (t < until is the test: equal is inactive), and the 64-bit extremes.
 
 #include "test_precomp.hpp"
 #include "stereo/active_estimate_map.hpp"
+#include "stereo/estimate_gather.hpp"
 
 namespace opencv_test { namespace {
 using namespace cv::event::detail;
@@ -145,6 +148,38 @@ TEST(Event_ActiveEstimateMap, near_sum_adds_the_active_estimates_within_the_tole
             ASSERT_EQ(expectedSum, sum);  // the same additions in the same order: bit for bit
         }
     }
+}
+
+TEST(Event_EstimateGather, kernel_equals_scalar_reference)
+{
+    RNG rng(31);
+    const EstimateGatherFn vector = estimateGatherKernelsForThisCpu().gather;
+    const EstimateGatherFn scalar = scalarEstimateGatherKernels().gather;
+    const int64 extremes[] = { std::numeric_limits<int64>::min(), std::numeric_limits<int64>::max() };
+    std::vector<int64> until(64);
+    std::vector<float> disparity(64), got(64 + ESTIMATE_GATHER_PAD), expected(64 + ESTIMATE_GATHER_PAD);
+    int actives = 0;
+    for (int trial = 0; trial < 2000; trial++)
+    {
+        const int64 t = trial % 50 == 0 ? extremes[trial / 50 % 2] : rng.uniform(-5, 6);
+        for (size_t i = 0; i < until.size(); i++)
+        {
+            // Mostly around t (at it, just before, just after), sometimes an extreme.
+            until[i] = rng.uniform(0, 8) == 0 ? extremes[rng.uniform(0, 2)] : rng.uniform(-6, 7);
+            disparity[i] = rng.uniform(0.f, 40.f);
+        }
+        const int start = rng.uniform(0, 17), n = rng.uniform(0, 41);
+        const int count = vector(&until[start], &disparity[start], n, t, got.data());
+        ASSERT_EQ(scalar(&until[start], &disparity[start], n, t, expected.data()), count);
+        for (int i = 0; i < count; i++)
+            ASSERT_EQ(expected[i], got[i]);
+        actives += count;
+        int direct = 0;  // and the reference against the definition
+        for (int i = 0; i < n; i++)
+            direct += t < until[start + i];
+        ASSERT_EQ(direct, count);
+    }
+    EXPECT_GT(actives, 10000);
 }
 
 }}  // namespace

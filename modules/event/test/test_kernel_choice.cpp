@@ -9,6 +9,7 @@
 #include "test_precomp.hpp"
 #include "stereo/descriptor_cost.hpp"
 #include "stereo/window_median.hpp"
+#include "stereo/estimate_gather.hpp"
 #include "lifetime/plane_inliers.hpp"
 
 #include <cstdlib>
@@ -29,7 +30,8 @@ TEST(Event_KernelChoice, every_kernel_family_runs_the_version_the_environment_as
     const std::string disabled = environment("OPENCV_CPU_DISABLE");
     const std::vector<std::string> names = { descriptorCostKernelsForThisCpu().name,
                                              windowMedianKernelsForThisCpu().name,
-                                             planeInlierKernelsForThisCpu().name };
+                                             planeInlierKernelsForThisCpu().name,
+                                             estimateGatherKernelsForThisCpu().name };
     for (const std::string& name : names)
     {
         if (!scalar.empty() && scalar != "0")

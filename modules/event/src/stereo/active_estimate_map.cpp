@@ -110,6 +110,9 @@ float valueOfRank(float* v, size_t n, size_t k)
         chosen[m] = v[i];
         m += code[i] == f;
     }
+    // Often one value repeated (whole-pixel estimates, an estimate copied): then there is nothing to select.
+    if (std::all_of(chosen + 1, chosen + m, [&chosen](float d) { return d == chosen[0]; }))
+        return chosen[0];
     std::nth_element(chosen, chosen + k, chosen + m);
     return chosen[k];
 }
@@ -129,17 +132,13 @@ size_t ActiveEstimateMap::sampledMedian(Point centre, int rows, int columns, int
         disparities.clear();
         return 0;
     }
-    // Every pixel's disparity is written and the count advances past the active ones: no branch on the
-    // (random) activity pattern. Blocks where nothing can be active are skipped.
-    disparities.resize((size_t)((y1 - y) / rowStep + 1) * (size_t)(x1 - x0 + 1));
+    // Blocks where nothing can be active are skipped; the kernel stores whole vectors past its count.
+    disparities.resize((size_t)((y1 - y) / rowStep + 1) * (size_t)(x1 - x0 + 1) + ESTIMATE_GATHER_PAD);
     float* const out = disparities.data();
     size_t n = 0;
-    forEachLiveBlockRun(x0, x1, y, y1, rowStep, t, [t, out, &n](const int64* until, const float* disparity, int xa, int xe) {
-        for (int x = xa; x <= xe; x++)
-        {
-            out[n] = disparity[x];
-            n += t < until[x];
-        }
+    const EstimateGatherFn gather = gather_;
+    forEachLiveBlockRun(x0, x1, y, y1, rowStep, t, [t, out, &n, gather](const int64* until, const float* disparity, int xa, int xe) {
+        n += (size_t)gather(until + xa, disparity + xa, xe - xa + 1, t, out + n);
     });
     disparities.resize(n);
     if (n == 0)

@@ -6,6 +6,7 @@
 #define OPENCV_EVENT_SRC_STEREO_ACTIVE_ESTIMATE_MAP_HPP
 
 #include "opencv2/core.hpp"
+#include "stereo/estimate_gather.hpp"
 
 #include <algorithm>
 #include <limits>
@@ -90,6 +91,7 @@ private:
     std::vector<int64> blockUntil_;
     int blocksPerRow_ = 0;
     std::vector<int64> lastEventTime_;
+    EstimateGatherFn gather_ = estimateGatherKernelsForThisCpu().gather;
 };
 
 }  // namespace detail
