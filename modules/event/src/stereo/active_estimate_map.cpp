@@ -57,13 +57,27 @@ inline int fractionBin(float d, int p)
     return std::min((int)((d - (float)p) * FRACTION_BINS), FRACTION_BINS - 1);
 }
 
-// The bin holding rank k of the counts, and k's rank within it.
-inline int binOfRank(const int* counts, size_t& k)
+// The bin (code) holding rank k among the n codes, and k's rank within it. Four sets of counts, one per position
+// modulo 4: the values of one window fall in few bins, and counting them in one array would wait on the previous
+// increment of the same bin at every value.
+template <int BINS>
+int binOfRank(const uchar* code, size_t n, size_t& k)
 {
+    int counts[4][BINS] = {};
+    size_t i = 0;
+    for (; i + 4 <= n; i += 4)
+        for (int j = 0; j < 4; j++)
+            counts[j][code[i + j]]++;
+    for (; i < n; i++)
+        counts[0][code[i]]++;
     int b = 0;
-    while (k >= (size_t)counts[b])
-        k -= (size_t)counts[b++];
-    return b;
+    for (;; b++)
+    {
+        const size_t inBin = (size_t)(counts[0][b] + counts[1][b] + counts[2][b] + counts[3][b]);
+        if (k < inBin)
+            return b;
+        k -= inBin;
+    }
 }
 
 // The value of rank k (0-based) among v[0, n), as std::nth_element finds it (v may be reordered). A window holds
@@ -78,34 +92,18 @@ float valueOfRank(float* v, size_t n, size_t k)
         std::nth_element(v, v + k, v + n);
         return v[k];
     }
-    // Four sets of counts, one per position modulo 4: the values of one window fall in few bins, and counting
-    // them in one array would wait on the previous increment of the same bin at every value.
-    int pixels[4][PIXEL_BINS] = {};
-    size_t i = 0;
-    for (; i + 4 <= n; i += 4)
-        for (int j = 0; j < 4; j++)
-            pixels[j][pixelBin(v[i + j])]++;
-    for (; i < n; i++)
-        pixels[0][pixelBin(v[i])]++;
-    for (int b = 0; b < PIXEL_BINS; b++)
-        pixels[0][b] += pixels[1][b] + pixels[2][b] + pixels[3][b];
-    const int p = binOfRank(pixels[0], k);
-    int fractions[4][FRACTION_BINS + 1] = {};  // the last bin: the values of the other pixels
     uchar code[MAX_COUNTED];
-    for (i = 0; i < n; i++)
-        code[i] = (uchar)(pixelBin(v[i]) == p ? fractionBin(v[i], p) : (int)FRACTION_BINS);
-    for (i = 0; i + 4 <= n; i += 4)
-        for (int j = 0; j < 4; j++)
-            fractions[j][code[i + j]]++;
-    for (; i < n; i++)
-        fractions[0][code[i]]++;
-    for (int b = 0; b <= FRACTION_BINS; b++)
-        fractions[0][b] += fractions[1][b] + fractions[2][b] + fractions[3][b];
-    const int f = binOfRank(fractions[0], k);
+    for (size_t i = 0; i < n; i++)
+        code[i] = (uchar)pixelBin(v[i]);
+    const int p = binOfRank<PIXEL_BINS>(code, n, k);
+    // The last bin: the values of the other pixels.
+    for (size_t i = 0; i < n; i++)
+        code[i] = (uchar)(code[i] == p ? fractionBin(v[i], p) : (int)FRACTION_BINS);
+    const int f = binOfRank<FRACTION_BINS + 1>(code, n, k);
     // The values of that 1/64 px, every value written and the count advanced past the chosen ones.
     float chosen[MAX_COUNTED];
     size_t m = 0;
-    for (i = 0; i < n; i++)
+    for (size_t i = 0; i < n; i++)
     {
         chosen[m] = v[i];
         m += code[i] == f;
@@ -136,10 +134,18 @@ size_t ActiveEstimateMap::sampledMedian(Point centre, int rows, int columns, int
     disparities.resize((size_t)((y1 - y) / rowStep + 1) * (size_t)(x1 - x0 + 1) + ESTIMATE_GATHER_PAD);
     float* const out = disparities.data();
     size_t n = 0;
-    const EstimateGatherFn gather = gather_;
-    forEachLiveBlockRun(x0, x1, y, y1, rowStep, t, [t, out, &n, gather](const int64* until, const float* disparity, int xa, int xe) {
-        n += (size_t)gather(until + xa, disparity + xa, xe - xa + 1, t, out + n);
-    });
+    const int block0 = x0 / ESTIMATE_BLOCK, block1 = x1 / ESTIMATE_BLOCK;
+    for (; y <= y1; y += rowStep)
+    {
+        const size_t row = (size_t)y * size_.width;
+        const int64* blockUntil = &blockUntil_[(size_t)y * blocksPerRow_];
+        for (int b = block0; b <= block1; b++)
+            if (t < blockUntil[b])
+            {
+                const int xa = std::max(x0, b * (int)ESTIMATE_BLOCK), xe = std::min(x1, (b + 1) * (int)ESTIMATE_BLOCK - 1);
+                n += (size_t)gather_(&until_[row + xa], &disparity_[row + xa], xe - xa + 1, t, out + n);
+            }
+    }
     disparities.resize(n);
     if (n == 0)
         return 0;

@@ -33,21 +33,9 @@ public:
     // disparity (no estimate) ends the pixel's estimate at once.
     void remember(Point r, int64 t, int64 activeFor, float disparity);
 
-    // Calls visit(disparity) for each estimate still active at time t in columns [x0, x1] of rows [y0, y1]
-    // (clipped to the image), row by row, left to right.
-    template <typename Visit>
-    void forEachActive(int x0, int x1, int y0, int y1, int64 t, Visit visit) const
-    {
-        forEachLiveBlockRun(x0, x1, std::max(0, y0), y1, 1, t, [t, &visit](const int64* until, const float* disparity, int xa, int xe) {
-            for (int x = xa; x <= xe; x++)
-                if (t < until[x])
-                    visit(disparity[x]);
-        });
-    }
-
     // Adds to sum each estimate active at time t in columns [x0, x1] of rows [y0, y1] (clipped to the image) that
-    // lies within `tolerance` of `value`, row by row, left to right, and counts them in n. The same sum as
-    // forEachActive's visits would give, without a branch per pixel (the window's activity is random).
+    // lies within `tolerance` of `value`, row by row, left to right, and counts them in n; without a branch per pixel
+    // (the window's activity is random).
     void sumNear(int x0, int x1, int y0, int y1, int64 t, float value, float tolerance, double& sum, int& n) const;
 
     // The disparities of the estimates active at time t within `rows` rows and `columns` columns of `centre`
@@ -64,25 +52,6 @@ public:
 
 private:
     enum { ESTIMATE_BLOCK = 16 };
-
-    // Calls run(until, disparity, xa, xe) for each run [xa, xe] of columns [x0, x1] (clipped) in rows y0,
-    // y0 + rowStep, ... up to y1 (clipped; y0 >= 0) that lies in a block where an estimate may be active at t;
-    // until and disparity are the row's.
-    template <typename Run>
-    void forEachLiveBlockRun(int x0, int x1, int y0, int y1, int rowStep, int64 t, Run run) const
-    {
-        x0 = std::max(0, x0);
-        x1 = std::min(size_.width - 1, x1);
-        const int block0 = x0 / ESTIMATE_BLOCK, block1 = x1 / ESTIMATE_BLOCK;
-        for (int y = y0; y <= std::min(size_.height - 1, y1); y += rowStep)
-        {
-            const int64* blockUntil = &blockUntil_[(size_t)y * blocksPerRow_];
-            for (int b = block0; b <= block1; b++)
-                if (t < blockUntil[b])
-                    run(&until_[(size_t)y * size_.width], &disparity_[(size_t)y * size_.width],
-                        std::max(x0, b * (int)ESTIMATE_BLOCK), std::min(x1, (b + 1) * (int)ESTIMATE_BLOCK - 1));
-        }
-    }
     static constexpr int64 NO_ESTIMATE = std::numeric_limits<int64>::min();
 
     Size size_;
