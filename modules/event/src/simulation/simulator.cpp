@@ -577,16 +577,14 @@ private:
         }
     }
 
-    std::array<float, 6> truth(int c, int x, int y, bool searchBlur = true) const
+    std::array<float, 6> truth(int c, int x, int y) const
     {
         const Size sz = s_.resolution;
         const int i = y * sz.width + x;
-        // An edge between two surfaces belongs to the nearer one (it is that surface's contour that moves):
-        // take the ground truth from the render, before or after the crossing, that sees the nearer surface.
-        if (s_.blurSigmaPx > 0 && searchBlur)
+        if (s_.blurSigmaPx > 0)
         {
             // Through the lens blur a pixel also fires for an edge as far away as the blur reaches: the nearest
-            // surface within that reach caused it. Its truth is taken from there. Even the blur's far tail
+            // surface within that reach caused it, and its depth and motion are the truth. Even the blur's far tail
             // fires where a pixel's reference level lies just above the surface behind (after one ON event,
             // two OFF events of half its threshold bring it back exactly there).
             const int reach = blurKernel().width / 2;
@@ -603,9 +601,22 @@ private:
                             bestIndex = yy * sz.width + xx;
                         }
                     }
-            if (bestIndex != i)
-                return truth(c, bestIndex % sz.width, bestIndex / sz.width, false);
+            return surfaceTruth(c, bestIndex % sz.width, bestIndex / sz.width, x, y);
         }
+        return surfaceTruth(c, x, y, x, y);
+    }
+
+    // The truth of the surface seen at pixel (x, y) for an event at pixel (ex, ey): through a lens blur a pixel
+    // fires for a surface up to 4 sigma away. Its depth, disparity and occlusion are the surface's; its normal
+    // flow is the surface's motion along the log-intensity gradient at the event's pixel, as the blurred
+    // pattern that fired there moves with the surface but has its own gradient (near a corner or a limb's end
+    // it turns away from the contour's).
+    std::array<float, 6> surfaceTruth(int c, int x, int y, int ex, int ey) const
+    {
+        const Size sz = s_.resolution;
+        const int i = y * sz.width + x;
+        // An edge between two surfaces belongs to the nearer one (it is that surface's contour that moves):
+        // take the ground truth from the render, before or after the crossing, that sees the nearer surface.
         const double z0 = cur_[c].depth[i], z1 = next_[c].depth[i];
         const bool before = z0 > 0 && (z1 <= 0 || z0 < z1);
         const Render& r = before ? cur_[c] : next_[c];
@@ -616,7 +627,27 @@ private:
             return g;  // the background: no geometry, no disparity
         g[GT_DEPTH] = (float)z;
         g[GT_DISPARITY] = (float)(s_.focalLength * s_.baseline / z);
-        // Normal flow: the flow's component along the log-intensity gradient (Sobel on the render).
+        setNormalFlow(r, ex, ey, r.flowX[i], r.flowY[i], g);
+        // Occlusion: is the same scene point the one the other camera sees at its projection?
+        const double f = s_.focalLength, cx = 0.5 * (sz.width - 1);
+        const double X = (x - cx) / f * z + (c == CAMERA_RIGHT ? s_.baseline : 0.0);
+        const double xo = c == CAMERA_LEFT ? f * (X - s_.baseline) / z + cx : f * X / z + cx;
+        const int xi = (int)std::lround(xo);
+        bool occluded = xi < 0 || xi >= sz.width;
+        if (!occluded)
+        {
+            const double zo = other.depth[y * sz.width + xi];
+            occluded = zo <= 0 || zo < z * (1 - 0.02);
+        }
+        g[GT_FLAGS] = occluded ? (float)GT_FLAG_OCCLUDED : 0.f;
+        return g;
+    }
+
+    // Normal flow at pixel (x, y) of render r for an image motion (flowX, flowY) [px/s]: the motion's component
+    // along the log-intensity gradient there (Sobel on the render), and its lifetime.
+    void setNormalFlow(const Render& r, int x, int y, double flowX, double flowY, std::array<float, 6>& g) const
+    {
+        const Size sz = s_.resolution;
         auto L = [&](int xx, int yy) {
             xx = std::min(std::max(xx, 0), sz.width - 1);
             yy = std::min(std::max(yy, 0), sz.height - 1);
@@ -631,23 +662,10 @@ private:
             nx = gx / gn;
             ny = gy / gn;
         }
-        const double along = r.flowX[i] * nx + r.flowY[i] * ny;
+        const double along = flowX * nx + flowY * ny;
         g[GT_FLOW_X] = (float)(along * nx);
         g[GT_FLOW_Y] = (float)(along * ny);
         g[GT_LIFETIME] = std::abs(along) > 1e-9 ? (float)(1e6 / std::abs(along)) : 0.f;
-        // Occlusion: is the same scene point the one the other camera sees at its projection?
-        const double f = s_.focalLength, cx = 0.5 * (sz.width - 1);
-        const double X = (x - cx) / f * z + (c == CAMERA_RIGHT ? s_.baseline : 0.0);
-        const double xo = c == CAMERA_LEFT ? f * (X - s_.baseline) / z + cx : f * X / z + cx;
-        const int xi = (int)std::lround(xo);
-        bool occluded = xi < 0 || xi >= sz.width;
-        if (!occluded)
-        {
-            const double zo = other.depth[y * sz.width + xi];
-            occluded = zo <= 0 || zo < z * (1 - 0.02);
-        }
-        g[GT_FLAGS] = occluded ? (float)GT_FLAG_OCCLUDED : 0.f;
-        return g;
     }
 
     // The stamp camera c gives an event that a shared clock stamps ts: the right camera's clock is off by
