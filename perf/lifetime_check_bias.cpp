@@ -1,6 +1,6 @@
 // What LifetimeArrivalCheck says of perfect lifetimes: prints one Markdown table.
 //
-//   lifetime_check_bias [--scenes=boxes,walking,boxes_pair] [--duration-ms=1000]
+//   lifetime_check_bias [--scenes=boxes,walking,boxes_pair] [--sensor=DAVIS240] [--duration-ms=1000]
 //
 // The simulator's true lifetime and normal flow of every event of the left camera (0 for noise, as a perfect
 // estimator would call it) go through the check, for each scene as built, for its ideal sensor (no threshold
@@ -91,11 +91,15 @@ int main(int argc, char** argv)
         const char* keys =
             "{help h      | false                   | print this message}"
             "{scenes      | boxes,walking,boxes_pair | simulator scenes, comma separated}"
+            "{sensor      | DAVIS240                | the sensor model the scenes are simulated on (DVS128, DAVIS240, DAVIS346)}"
             "{duration-ms | 1000                    | simulated time per row [ms]}";
         ProgramCommandLine cmd(argc, argv, keys, "What LifetimeArrivalCheck says of the simulator's true lifetimes.");
         if (cmd.helpShown())
             return 0;
         const double durationUs = cmd.get<double>("duration-ms") * 1000;
+        const int sensorModel = findSensorModel(cmd.get<std::string>("sensor"));
+        if (sensorModel < 0)
+            CV_Error_(Error::StsBadArg, ("--sensor=%s: not a sensor model", cmd.get<std::string>("sensor").c_str()));
         std::vector<std::string> scenes;
         std::stringstream list(cmd.get<std::string>("scenes"));
         for (std::string s; std::getline(list, s, ',');)
@@ -116,7 +120,7 @@ int main(int argc, char** argv)
         for (const std::string& scene : scenes)
             for (const Variant& v : variants)
             {
-                const Ptr<StereoEventSimulator> built = StereoEventSimulator::create(scene);
+                const Ptr<StereoEventSimulator> built = StereoEventSimulator::create(scene, sensorModel);
                 SimulatorSettings s = built->getSettings();
                 v.change(s);
                 const Result r = check(StereoEventSimulator::create(built->getPlanes(), s), durationUs);

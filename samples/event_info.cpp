@@ -1,7 +1,7 @@
 // event_info: what is in an event recording (like ffprobe for videos).
 //
 //   event_info [--json] [--stats] [--sensor=WxH|NAME] [--one-based] [--left-camera-value=0|1] FILE...
-//   event_info --stats --scene=NAME[,NAME...] [--duration-ms=MS]   (the simulator's scenes)
+//   event_info --stats --scene=NAME[,NAME...] [--sensor=DVS128|DAVIS240|DAVIS346] [--duration-ms=MS]   (the simulator's scenes)
 //   event_info --devices      (the event cameras connected: what EventCapture::open("davis:...") takes)
 //
 // Per file: detected format, sensor size, event count (ON / OFF, and left / right for stereo files), trigger
@@ -204,14 +204,14 @@ const char* const keys =
     "{scene             |       | simulator scenes to describe, comma separated (e.g. two_planes,cluttered)}"
     "{duration-ms       | 1000  | length of each simulated scene [ms]}"
     "{devices           | false | list the event cameras connected (what EventCapture::open(\"davis:N\") takes)}"
-    "{sensor            |       | sensor size WxH or a name (DVS128, DAVIS240, DAVIS346) when the format has none}"
+    "{sensor            |       | sensor size WxH or a name (DVS128, DAVIS240, DAVIS346) when the format has none; the model the scenes are simulated on (default DAVIS240)}"
     "{one-based         | false | text recordings count pixels from 1}"
     "{left-camera-value | 0     | the camera column's value that means left, in text recordings}";
 
 int main(int argc, char** argv)
 {
     bool json = false, oneBased = false, withStatistics = false;
-    int leftValue = 0;
+    int leftValue = 0, sceneModel = SENSOR_DAVIS240;
     double durationMs = 0;
     Size sensor;
     std::vector<std::string> files, scenes;
@@ -237,6 +237,13 @@ int main(int argc, char** argv)
         while (std::getline(list, scene, ','))
             if (!scene.empty())
                 scenes.push_back(scene);
+        if (!scenes.empty() && cmd.has("sensor"))
+        {
+            sceneModel = findSensorModel(cmd.get<std::string>("sensor"));
+            if (sceneModel < 0)
+                throw std::runtime_error("--sensor=" + cmd.get<std::string>("sensor")
+                                         + ": the scenes need a sensor model by name (DVS128, DAVIS240, DAVIS346)");
+        }
         files = cmd.positionals();
         if (files.empty() && scenes.empty())
             throw std::runtime_error("no recording given: event_info [options] FILE... (--help lists the options)");
@@ -256,7 +263,7 @@ int main(int argc, char** argv)
     for (size_t k = 0; k < total; k++)
     {
         const Info info = k < files.size() ? probe(files[k], sensor, oneBased, leftValue, withStatistics)
-                                           : probeScene(scenes[k - files.size()], durationMs, withStatistics);
+                                           : probeScene(scenes[k - files.size()], sceneModel, durationMs, withStatistics);
         failed |= !info.error.empty();
         if (json)
             printJson(info, k + 1 == total);

@@ -42,7 +42,7 @@ const char* const keys =
     "{max-ms        | -1              | stop after this much recording time [ms]; -1: all}"
     "{csv           |                 | write every event with its lifetime and flow to this file}"
     "{output        | lifetime_output | output folder}"
-    "{sensor        |                 | sensor size WxH or a name (DVS128, DAVIS240, DAVIS346) when the format has none}"
+    "{sensor        |                 | sensor size WxH or a name (DVS128, DAVIS240, DAVIS346) when the format has none; the model --scene is simulated on (default DAVIS240)}"
     "{one-based     | false           | text recordings count pixels from 1}"
     "{no-prediction | false           | fit a plane for every event (no prediction shortcut)}"
     "{set           |                 | estimator parameters NAME=VALUE, comma separated (FileStorage names, e.g. inlierDistance=0,windowSize=7)}"
@@ -75,9 +75,15 @@ int main(int argc, char** argv)
             throw std::runtime_error(output + ": cannot create the output folder");
         if (input.empty())
         {
+            // A sensor named by --sensor is the model the scene is simulated on.
+            const int model = cmd.has("sensor") ? findSensorModel(cmd.get<std::string>("sensor")) : SENSOR_DAVIS240;
+            if (model < 0)
+                throw std::runtime_error("--sensor=" + cmd.get<std::string>("sensor")
+                                         + ": a scene needs a sensor model by name (DVS128, DAVIS240, DAVIS346)");
             input = output + "/" + scene + ".aedat4";
-            std::cerr << "no input given: simulating 1 s of scene \"" << scene << "\" into " << input << "\n";
-            writeSimulatedRecording(StereoEventSimulator::create(scene), input, 1e6);
+            std::cerr << "no input given: simulating 1 s of scene \"" << scene << "\" on a " << getSensorModelName(model)
+                      << " into " << input << "\n";
+            writeSimulatedRecording(StereoEventSimulator::create(scene, model), input, 1e6);
         }
         EventCapture cap;
         cap.set(EVENT_CAP_PROP_SENSOR_WIDTH, sensor.width);

@@ -132,15 +132,16 @@ inline Info probe(const std::string& path, Size sensor, bool oneBased, int leftV
     return info;
 }
 
-// A simulator scene, generated in memory in 10 ms steps (--scene).
-inline Info probeScene(const std::string& scene, double durationMs, bool withStatistics)
+// A simulator scene on a sensor model, generated in memory in 10 ms steps (--scene).
+inline Info probeScene(const std::string& scene, int sensorModel, double durationMs, bool withStatistics)
 {
     Info info;
-    info.file = "scene " + scene + " (" + std::to_string((int)durationMs) + " ms)";
+    info.file = "scene " + scene + (sensorModel == SENSOR_DAVIS240 ? "" : " on a " + getSensorModelName(sensorModel))
+        + " (" + std::to_string((int)durationMs) + " ms)";
     CameraStatistics statistics(withStatistics);
     try
     {
-        Ptr<StereoEventSimulator> sim = StereoEventSimulator::create(scene);
+        Ptr<StereoEventSimulator> sim = StereoEventSimulator::create(scene, sensorModel);
         info.format = "simulated";
         info.size = sim->getSensorSize();
         info.stereo = true;

@@ -40,7 +40,7 @@ SimulatedPlane uniformPlane(Vec3d center, Vec2d halfSize, double intensity, Vec3
 // A real DAVIS's departures from the ideal sensor, as the realistic scenes use them: thresholds of 0.25 with
 // a 0.05 spread, 0.5 ms refractory period, background activity, a few hot pixels, leak, readout latency and
 // jitter, and a pair rectified to within about a pixel.
-void realSensor(SimulatorSettings& s)
+void davisSensor(SimulatorSettings& s)
 {
     s.thresholdOn = s.thresholdOff = 0.25;
     s.thresholdSigma = 0.05;
@@ -56,14 +56,44 @@ void realSensor(SimulatorSettings& s)
     s.rightRollRad = 0.004;  // with the offset: 0.5 px at one side of a DAVIS240, 1 px at the other
 }
 
-// Two DAVIS240s of a real stereo rig (measured against recordings of such pairs): on top of realSensor(), OFF
+// A DVS128's departures instead, so that the realistic scenes record as real DVS128 pairs do (1.2-1.3 events
+// per pixel per edge crossing, as many ON as OFF events): pixels twice a DAVIS240's pitch, so half its blur in
+// pixels; thresholds of 0.3 that also vary from one crossing to the next; a refractory period short enough
+// for a burst; a slower, more varied readout; and a pair rectified by hand to within about a pixel.
+void dvs128Sensor(SimulatorSettings& s)
+{
+    s.thresholdOn = s.thresholdOff = 0.3;
+    s.thresholdSigma = 0.03;
+    s.thresholdNoise = 0.03;
+    s.refractoryUs = 10;
+    s.noiseRateHz = 0.1;
+    s.hotPixelShare = 0.0005;
+    s.hotPixelRateHz = 20;
+    s.latencyUs = 100;
+    s.latencySigmaUs = 50;
+    s.jitterUs = 50;
+    s.blurSigmaPx = 0.5;
+    s.rightRowOffset = 0.5;
+    s.rightRollRad = 0.008;  // with the offset: 0.5 px at one side, 1 px at the other
+}
+
+// The realistic scenes' sensor: a DVS128's departures on that model, a DAVIS's on any other.
+void realSensor(SimulatorSettings& s, int sensorModel)
+{
+    if (sensorModel == SENSOR_DVS128)
+        dvs128Sensor(s);
+    else
+        davisSensor(s);
+}
+
+// Two DAVIS240s of a real stereo rig (measured against recordings of such pairs): on top of davisSensor(), OFF
 // events fire more readily than ON ones, thresholds vary more from pixel to pixel and from one crossing to
 // the next (dotted edges with holes), the optics blur edges to 2-4 px, the right sensor's thresholds are
 // rightScale times the left's (below 1: it fires more events), and it stamps them rightClockUs later (its
 // clock, and its OFF circuit, which is slower than its ON one).
 void davis240Pair(SimulatorSettings& s, double rightScale, double rightClockUs)
 {
-    realSensor(s);
+    davisSensor(s);
     s.thresholdOn = 0.5;
     s.thresholdOff = 0.25;
     s.thresholdSigma = 0.08;
@@ -142,7 +172,7 @@ void addWalker(std::vector<SimulatedPlane>& planes, double depth, double speed, 
 
 }  // namespace
 
-std::vector<SimulatedPlane> simulatedScene(const String& name, SimulatorSettings& s)
+std::vector<SimulatedPlane> simulatedScene(const String& name, int sensorModel, SimulatorSettings& s)
 {
     std::vector<SimulatedPlane> planes;
     if (name == "plane")
@@ -207,14 +237,14 @@ std::vector<SimulatedPlane> simulatedScene(const String& name, SimulatorSettings
             planes.push_back(lamp);
             s.flickerFrequencyHz = 100;
         }
-        realSensor(s);
+        realSensor(s, sensorModel);
     }
     else if (name == "walking")
     {
         // A person walking right at 1.1 m/s, 3 m away (disparity 6.7 px), in front of a plain wall at 6 m (3.3 px).
         planes.push_back(uniformPlane(Vec3d(0, 0, 6.0), Vec2d(10, 8), 0.5));
         addWalker(planes, 3.0, 1.1, -1.6, WalkerLook{ 0.2, 0.32, 0 });
-        realSensor(s);
+        realSensor(s, sensorModel);
     }
     else if (name == "walking_near")
     {
@@ -224,7 +254,7 @@ std::vector<SimulatedPlane> simulatedScene(const String& name, SimulatorSettings
         // pairs (they differ by 9-13 % in event count, one by 85 %).
         planes.push_back(uniformPlane(Vec3d(0, 0, 6.0), Vec2d(10, 8), 0.5));
         addWalker(planes, 1.5, 1.1, -0.8, WalkerLook{ 0.33, 0.38, 0.3 });
-        realSensor(s);
+        realSensor(s, sensorModel);
         s.rightThresholdScale = 1.1;
     }
     else if (name == "boxes_pair" || name == "boxes_fast_pair")
@@ -273,7 +303,7 @@ std::vector<SimulatedPlane> simulatedScene(const String& name, SimulatorSettings
         p.intensity = 0.5;
         p.contrast = 0.3;
         planes.push_back(p);
-        realSensor(s);
+        realSensor(s, sensorModel);
     }
     else
     {

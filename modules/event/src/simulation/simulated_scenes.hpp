@@ -15,7 +15,7 @@ namespace detail {
 
 /** The planes of a named scene; sets the settings the scene brings (a real sensor's noise, a weaker right
     camera, ...) in @p settings. Raises cv::Error::StsBadArg naming the scenes for an unknown name. */
-std::vector<SimulatedPlane> simulatedScene(const String& name, SimulatorSettings& settings);
+std::vector<SimulatedPlane> simulatedScene(const String& name, int sensorModel, SimulatorSettings& settings);
 
 /** The names simulatedScene() takes. */
 std::vector<String> simulatedSceneNames();

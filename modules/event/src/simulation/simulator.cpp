@@ -773,7 +773,7 @@ Ptr<StereoEventSimulator> StereoEventSimulator::create(const String& scene, int 
 {
     SimulatorSettings s = SimulatorSettings::preset(sensorModel);
     s.seed = seed;
-    const std::vector<SimulatedPlane> planes = detail::simulatedScene(scene, s);
+    const std::vector<SimulatedPlane> planes = detail::simulatedScene(scene, sensorModel, s);
     return makePtr<StereoEventSimulatorImpl>(planes, s);
 }
 

@@ -158,7 +158,8 @@ Named scenes (create()):
   activity noise;
 - "boxes", "boxes_fast", "walking", "walking_near", "low_contrast": the realistic scenes (sparse edges on a
   plain wall, a walking figure 3 m and 1.5 m away, faint texture) with a real DAVIS's noise, latency and
-  imperfect rectification;
+  imperfect rectification; on SENSOR_DVS128, with a real DVS128's instead (thresholds of 0.3 that vary from
+  one crossing to the next, a 10 us refractory period, 0.5 px of lens blur, a slower readout);
 - "boxes_pair", "boxes_fast_pair", "walking_pair": boxes slid to and fro (their faces turned a little, so that
   their disparities fall between whole pixels) and the walking figure 1.8 m away in front of a patterned wall,
   as a real DAVIS240 pair records them: thicker, dotted edges, more OFF than ON events, sensors of different
