@@ -89,8 +89,8 @@ done < <(grep '^| scene ' "$work/pairs.txt" | awk -F' [|] ' '{
   printf "| `%s` | %s | %s | %s | %s | %s | %.1f / %.0f | %.0f %% | %s\n", $1, $2, $3, $4, $5, $6, interval[1], interval[2], iso, $9 }')
 # The realistic scenes on a DVS128 (doc/simulator.md), formatted as the pairs' table.
 while IFS= read -r line; do
-  expect doc/simulator.md "$line" "event_info --stats --scene=boxes,boxes_fast,walking,walking_near,low_contrast --sensor=DVS128"
-done < <("$samples/event_info" --stats --scene=boxes,boxes_fast,walking,walking_near,low_contrast --sensor=DVS128 \
+  expect doc/simulator.md "$line" "event_info --stats --scene=boxes,boxes_fast,walking,walking_near,low_contrast,fan --sensor=DVS128"
+done < <("$samples/event_info" --stats --scene=boxes,boxes_fast,walking,walking_near,low_contrast,fan --sensor=DVS128 \
            --duration-ms=1000 | grep '^| scene ' | awk -F' [|] ' '{
   sub(/^[|] scene /, "", $1); sub(/ .*/, "", $1); split($7, interval, " / "); iso = $8; sub(/ %/, "", iso)
   printf "| `%s` | %s | %s | %s | %s | %s | %.1f / %.0f | %.0f %% | %s\n", $1, $2, $3, $4, $5, $6, interval[1], interval[2], iso, $9 }')
@@ -287,7 +287,8 @@ for entry in "format_samples/aestream_davis346.aedat4::DAVIS346 sample (aestream
 done
 # The same check on the realistic scenes simulated on a DVS128 (the table's last rows).
 for entry in "walking:simulated \`walking\` on a DVS128 (\`--scene=walking --sensor=DVS128\`)" \
-             "boxes:simulated \`boxes\` on a DVS128" "walking_near:simulated \`walking_near\` on a DVS128"; do
+             "boxes:simulated \`boxes\` on a DVS128" "walking_near:simulated \`walking_near\` on a DVS128" \
+             "fan:simulated \`fan\` on a DVS128"; do
   IFS=: read -r scene label <<< "$entry"
   expectPlain doc/lifetime.md "| $label | $(arrival --scene=$scene --sensor=DVS128 --set=inlierDistance=0) | $(arrival --scene=$scene --sensor=DVS128) |" \
     "event_lifetime --scene=$scene --sensor=DVS128, inlierDistance=0 and the defaults: the lifetime check"

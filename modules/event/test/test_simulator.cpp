@@ -442,3 +442,38 @@ TEST(Event_Simulator, on_a_dvs128_the_realistic_scenes_record_as_real_dvs128_pai
 }
 
 }}  // namespace
+
+namespace opencv_test { namespace {
+
+// The fan's blades turn at omega = 2 pi 25 rad/s about the hub, which the left camera sees at the image centre:
+// a point of a blade's side edge s px along the blade moves across the edge at omega s px/s, so its true lifetime
+// is 1 / (omega s), with s = sqrt(r^2 - w^2) at r px from the hub for blades w px half-wide (0.012 m at 1 m).
+TEST(Event_Simulator, a_fans_blade_edges_live_one_over_the_angular_speed_times_their_distance_along_the_blade)
+{
+    Ptr<StereoEventSimulator> sim = StereoEventSimulator::create("fan");
+    const SimulatorSettings& s = sim->getSettings();
+    const double omega = 2 * CV_PI * 25, w = 0.012 * s.focalLength / 1.0;
+    const double cx = 0.5 * (s.resolution.width - 1), cy = 0.5 * (s.resolution.height - 1);
+    std::vector<Event> ev;
+    Mat gt;
+    sim->generate(200000, ev, gt);
+    std::vector<double> ratios;
+    for (size_t i = 0; i < ev.size(); i++)
+    {
+        const float* g = gt.ptr<float>((int)i);
+        const double r = std::hypot(ev[i].x - cx, ev[i].y - cy);
+        // Along the blades' side edges: clear of the hub, where the two bars cross, and of the tips (14 px).
+        if (ev[i].camera != CAMERA_LEFT || ((int)g[GT_FLAGS] & GT_FLAG_NOISE) || r < 6 || r > 12 || g[GT_LIFETIME] <= 0)
+            continue;
+        ratios.push_back(g[GT_LIFETIME] * 1e-6 * omega * std::sqrt(r * r - w * w));
+    }
+    ASSERT_GT(ratios.size(), 1000u);
+    std::sort(ratios.begin(), ratios.end());
+    EXPECT_NEAR(1.0, ratios[ratios.size() / 2], 0.02);
+    // A pixel's centre lies up to half a pixel off the edge, and the edge's direction there is the image
+    // gradient's over 3 x 3 pixels: each lifetime is off by a few percent.
+    EXPECT_NEAR(1.0, ratios[ratios.size() / 4], 0.06);
+    EXPECT_NEAR(1.0, ratios[ratios.size() * 3 / 4], 0.06);
+}
+
+}}  // namespace

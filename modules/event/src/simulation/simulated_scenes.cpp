@@ -295,6 +295,22 @@ std::vector<SimulatedPlane> simulatedScene(const String& name, int sensorModel, 
         addWalker(planes, 1.8, 1.1, -1.0, WalkerLook{ 0.36, 0.4, 0 });
         davis240Pair(s, 1.3, -1700);
     }
+    else if (name == "fan")
+    {
+        // A small four-bladed fan 1 m away (14 cm across: 14 px on a DVS128, 28 px on a DAVIS240) turning at
+        // 25 revolutions per second in front of a plain wall at 3 m, its blades a little brighter than the wall
+        // (log contrast 0.45, under two thresholds): a pixel fires once or not at all as a blade passes, and a
+        // blade's edge moves at 2 pi 25 r px/s at r px from the hub.
+        planes.push_back(uniformPlane(Vec3d(0, 0, 3.0), Vec2d(5, 5), 0.3));
+        for (int k = 0; k < 2; k++)  // two crossed bars, each two blades
+        {
+            SimulatedPlane bar = uniformPlane(Vec3d(0, 0, 1.0), Vec2d(0.07, 0.012), 0.47);
+            bar.rotation = Vec3d(0, 0, 0.5 * CV_PI * k);
+            bar.angularVelocity = Vec3d(0, 0, 2 * CV_PI * 25);
+            planes.push_back(bar);
+        }
+        realSensor(s, sensorModel);
+    }
     else if (name == "low_contrast")
     {
         // A faintly textured plane (log contrast up to 0.36, about one threshold) sliding over a plain wall.
@@ -318,7 +334,7 @@ std::vector<SimulatedPlane> simulatedScene(const String& name, int sensorModel, 
 std::vector<String> simulatedSceneNames()
 {
     return std::vector<String>{ "plane", "two_planes", "moving_line", "faint_line", "cluttered",
-                                "boxes", "boxes_fast", "walking", "walking_near", "low_contrast", "boxes_flicker",
+                                "boxes", "boxes_fast", "walking", "walking_near", "low_contrast", "fan", "boxes_flicker",
                                 "boxes_pair", "boxes_fast_pair", "walking_pair" };
 }
 

@@ -160,6 +160,9 @@ Named scenes (create()):
   plain wall, a walking figure 3 m and 1.5 m away, faint texture) with a real DAVIS's noise, latency and
   imperfect rectification; on SENSOR_DVS128, with a real DVS128's instead (thresholds of 0.3 that vary from
   one crossing to the next, a 10 us refractory period, 0.5 px of lens blur, a slower readout);
+- "fan": a small four-bladed fan 1 m away turning at 25 revolutions per second, its blades under two thresholds
+  brighter than the wall behind, with the same real sensor's departures (the fan of the TUM DVS128 pairs, on a
+  DVS128);
 - "boxes_pair", "boxes_fast_pair", "walking_pair": boxes slid to and fro (their faces turned a little, so that
   their disparities fall between whole pixels) and the walking figure 1.8 m away in front of a patterned wall,
   as a real DAVIS240 pair records them: thicker, dotted edges, more OFF than ON events, sensors of different
