@@ -12,6 +12,7 @@
 #define OPENCV_EVENT_COMMON_COMMAND_LINE_HPP
 
 #include <opencv2/core/utility.hpp>
+#include <opencv2/event/types.hpp>
 
 #include <iostream>
 #include <map>
@@ -36,6 +37,17 @@ inline std::runtime_error sensorSizeMissing(const std::string& source)
 {
     return std::runtime_error(source + ": the file does not record the sensor size; pass --sensor=WxH (event_info "
                               "lists the pixels its events lie on)");
+}
+
+/** The sensor model --sensor names for a simulated scene (cv::event::findSensorModel(): DVS128, DAVIS240,
+    DAVIS346, any case); a size or an unknown name is an error saying what to give instead. */
+inline int sceneSensorModel(const std::string& name)
+{
+    const int model = cv::event::findSensorModel(name);
+    if (model < 0)
+        throw std::runtime_error("--sensor=" + name
+                                 + ": a simulated scene needs a sensor model by name (DVS128, DAVIS240, DAVIS346)");
+    return model;
 }
 
 /** What to do about input events outside the sensor. A text recording that counts pixels from 1 (TUM's DVS128

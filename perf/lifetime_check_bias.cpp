@@ -97,9 +97,7 @@ int main(int argc, char** argv)
         if (cmd.helpShown())
             return 0;
         const double durationUs = cmd.get<double>("duration-ms") * 1000;
-        const int sensorModel = findSensorModel(cmd.get<std::string>("sensor"));
-        if (sensorModel < 0)
-            CV_Error_(Error::StsBadArg, ("--sensor=%s: not a sensor model", cmd.get<std::string>("sensor").c_str()));
+        const int sensorModel = sceneSensorModel(cmd.get<std::string>("sensor"));
         std::vector<std::string> scenes;
         std::stringstream list(cmd.get<std::string>("scenes"));
         for (std::string s; std::getline(list, s, ',');)

@@ -238,12 +238,7 @@ int main(int argc, char** argv)
             if (!scene.empty())
                 scenes.push_back(scene);
         if (!scenes.empty() && cmd.has("sensor"))
-        {
-            sceneModel = findSensorModel(cmd.get<std::string>("sensor"));
-            if (sceneModel < 0)
-                throw std::runtime_error("--sensor=" + cmd.get<std::string>("sensor")
-                                         + ": the scenes need a sensor model by name (DVS128, DAVIS240, DAVIS346)");
-        }
+            sceneModel = sceneSensorModel(cmd.get<std::string>("sensor"));
         files = cmd.positionals();
         if (files.empty() && scenes.empty())
             throw std::runtime_error("no recording given: event_info [options] FILE... (--help lists the options)");

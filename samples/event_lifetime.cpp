@@ -75,11 +75,7 @@ int main(int argc, char** argv)
             throw std::runtime_error(output + ": cannot create the output folder");
         if (input.empty())
         {
-            // A sensor named by --sensor is the model the scene is simulated on.
-            const int model = cmd.has("sensor") ? findSensorModel(cmd.get<std::string>("sensor")) : SENSOR_DAVIS240;
-            if (model < 0)
-                throw std::runtime_error("--sensor=" + cmd.get<std::string>("sensor")
-                                         + ": a scene needs a sensor model by name (DVS128, DAVIS240, DAVIS346)");
+            const int model = cmd.has("sensor") ? sceneSensorModel(cmd.get<std::string>("sensor")) : SENSOR_DAVIS240;
             input = output + "/" + scene + ".aedat4";
             std::cerr << "no input given: simulating 1 s of scene \"" << scene << "\" on a " << getSensorModelName(model)
                       << " into " << input << "\n";

@@ -60,8 +60,13 @@ stereo() {  # stereo OUTPUT-NAME ARGS...: event_stereo on a recording, its summa
 # SIGPIPE, and pipefail would count that as no match).
 expectPlain() { if sed 's/[*][*]//g' "$repo/$1" | grep -F -- "$2" > /dev/null; then quoted "$@"; else notQuoted "$@"; fi; }
 
-# The DAVIS240-pair scenes (doc/simulator.md, doc/stereo.md). Their statistics as simulator.md's table gives
+# The DAVIS240-pair scenes (doc/simulator.md, doc/stereo.md). Their statistics as simulator.md's tables give
 # them: p10 interval to 0.1 ms, median to the ms, the isolated share to the percent, no p90.
+statisticsRows() {  # event_info --stats output in, the scenes' rows as simulator.md writes them out
+  grep '^| scene ' | awk -F' [|] ' '{
+  sub(/^[|] scene /, "", $1); sub(/ .*/, "", $1); split($7, interval, " / "); iso = $8; sub(/ %/, "", iso)
+  printf "| `%s` | %s | %s | %s | %s | %s | %.1f / %.0f | %.0f %% | %s\n", $1, $2, $3, $4, $5, $6, interval[1], interval[2], iso, $9 }'
+}
 # The simulations run side by side; a run that fails leaves no figure, and its check fails.
 "$samples/event_info" --stats --scene=boxes_pair,boxes_fast_pair,walking_pair --duration-ms=3000 > "$work/pairs.txt" &
 "$build/perf/design_figures" > "$work/design.txt" &
@@ -84,16 +89,12 @@ done
 wait
 while IFS= read -r line; do
   expect doc/simulator.md "$line" "event_info --stats --scene=boxes_pair,boxes_fast_pair,walking_pair --duration-ms=3000"
-done < <(grep '^| scene ' "$work/pairs.txt" | awk -F' [|] ' '{
-  sub(/^[|] scene /, "", $1); sub(/ .*/, "", $1); split($7, interval, " / "); iso = $8; sub(/ %/, "", iso)
-  printf "| `%s` | %s | %s | %s | %s | %s | %.1f / %.0f | %.0f %% | %s\n", $1, $2, $3, $4, $5, $6, interval[1], interval[2], iso, $9 }')
+done < <(statisticsRows < "$work/pairs.txt")
 # The realistic scenes on a DVS128 (doc/simulator.md), formatted as the pairs' table.
 while IFS= read -r line; do
   expect doc/simulator.md "$line" "event_info --stats --scene=boxes,boxes_fast,walking,walking_near,low_contrast,fan --sensor=DVS128"
 done < <("$samples/event_info" --stats --scene=boxes,boxes_fast,walking,walking_near,low_contrast,fan --sensor=DVS128 \
-           --duration-ms=1000 | grep '^| scene ' | awk -F' [|] ' '{
-  sub(/^[|] scene /, "", $1); sub(/ .*/, "", $1); split($7, interval, " / "); iso = $8; sub(/ %/, "", iso)
-  printf "| `%s` | %s | %s | %s | %s | %s | %.1f / %.0f | %.0f %% | %s\n", $1, $2, $3, $4, $5, $6, interval[1], interval[2], iso, $9 }')
+           --duration-ms=1000 | statisticsRows)
 # How they match: each event's own estimate with the clocks as recorded, the averaging, the clock estimate,
 # then the defaults (the filling) with their density, as simulator.md's and stereo.md's tables give them.
 rate() { decimal "$(row "$1" "ground truth: matching rate" | awk '{ print $1 }')"; }

@@ -410,8 +410,9 @@ TEST(Event_Simulator, on_a_dvs128_the_realistic_scenes_record_as_real_dvs128_pai
     for (const char* scene : { "walking", "boxes" })
     {
         Ptr<StereoEventSimulator> sim = StereoEventSimulator::create(scene, SENSOR_DVS128);
-        ASSERT_EQ(Size(128, 128), sim->getSensorSize());
-        Ptr<EventStatistics> stats[2] = { EventStatistics::create(Size(128, 128)), EventStatistics::create(Size(128, 128)) };
+        const Size size = sim->getSensorSize();
+        ASSERT_EQ(Size(128, 128), size);
+        Ptr<EventStatistics> stats[2] = { EventStatistics::create(size), EventStatistics::create(size) };
         std::vector<Event> packet, perCamera[2];
         Mat truth;
         for (double t = 10000; t <= 1000000; t += 10000)
