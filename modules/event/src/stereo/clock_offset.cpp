@@ -377,8 +377,9 @@ double estimateClockOffset(InputArray events, Size sensorSize, int minDisparity,
     // kMinGainSignificance standard errors of none, says so. Where it follows only weakly, an offset that makes
     // the matches less clear-cut than none is no correction; where it follows as a clock would, the events
     // have spoken (a more sensitive camera's earlier events match a little less clear-cut once aligned, and
-    // better), unless the matches lose more than kMaxConfidenceLoss of their confidence: then the slope
-    // vanished by chance far from the clock.
+    // better), unless they are more than kMaxConfidenceLoss less clear-cut than at any offset tried: then the
+    // slope vanished by chance far from the clock (objects that each move at one speed: it passes through
+    // zero again 17-18 ms past the clock, where the matches are clearly worse than further on).
     const auto weight = [](const SlopeFit& f) { return 1.0 / std::max(1.0, f.standardErrorUs * f.standardErrorUs); };
     double sumW = 0, sumO = 0, sumG = 0;
     for (const SlopeFit& f : fits)
@@ -398,10 +399,13 @@ double estimateClockOffset(InputArray events, Size sensorSize, int minDisparity,
     if (!(spread > 0))
         return 0;
     const double overallGain = covariance / spread, gainError = std::sqrt(1.0 / spread);
+    double clearest = 0;
+    for (const SlopeFit& f : fits)
+        clearest = std::max(clearest, f.meanConfidence);
     if (!(overallGain >= kMinGain) || overallGain < kMinGainSignificance * gainError ||
         std::abs(best->offsetUs) >= kMaxOffsetUs ||
         (overallGain < kClearGain && best->meanConfidence < fits[0].meanConfidence - kConfidenceTolerance) ||
-        best->meanConfidence < fits[0].meanConfidence * (1 - kMaxConfidenceLoss))
+        best->meanConfidence < clearest * (1 - kMaxConfidenceLoss))
         return 0;
     if (uncertaintyUs)
         *uncertaintyUs = best->standardErrorUs / std::min(overallGain, 1.0);
