@@ -109,9 +109,11 @@ function(opencv_event_configure_test target)
   opencv_event_link_test_codecs(${target})
   # Unit tests of internal classes include their headers as the library does ("stereo/zou_descriptor_map.hpp").
   target_include_directories(${target} PRIVATE "${OPENCV_EVENT_MODULE_DIR}/src")
-  get_filename_component(source_root "${OPENCV_EVENT_MODULE_DIR}/../.." ABSOLUTE)
   # The repository root: tests read its committed fixtures (the fuzzers' seed files, test/fuzz/corpus).
-  target_compile_definitions(${target} PRIVATE
-    OPENCV_EVENT_SHARED_DATA_DEFAULT="${OPENCV_EVENT_SHARED_DATA_DEFAULT}"
-    OPENCV_EVENT_SOURCE_ROOT="${source_root}")
+  get_filename_component(OPENCV_EVENT_SOURCE_ROOT "${OPENCV_EVENT_MODULE_DIR}/../.." ABSOLUTE)
+  # Both paths in one generated source of the target's own, not in compile definitions: those would be in every
+  # test object's command line, and a fresh clone (another path) would then miss ccache for all of them.
+  set(paths_source "${CMAKE_CURRENT_BINARY_DIR}/${target}_paths.cpp")
+  configure_file("${OPENCV_EVENT_MODULE_DIR}/test/test_paths.cpp.in" "${paths_source}" @ONLY)
+  target_sources(${target} PRIVATE "${paths_source}")
 endfunction()

@@ -20,7 +20,7 @@ namespace opencv_test { namespace {
 
 std::string corpusDir()
 {
-    return std::string(OPENCV_EVENT_SOURCE_ROOT) + "/test/fuzz/corpus";
+    return std::string(sourceRoot()) + "/test/fuzz/corpus";
 }
 
 std::string readBytes(const std::string& path)

@@ -16,12 +16,17 @@
 
 namespace opencv_test {
 
+/** Where the build found ../shared/data and the repository root (a source CMake generates per test program,
+test_paths.cpp.in). */
+const char* sharedDataDefault();
+const char* sourceRoot();
+
 /** Path of a real recording under ../shared/data (or $OPENCV_EVENT_SHARED_DATA); the test is skipped, with
 a message, when it is absent: the recordings are never part of the repository. */
 inline std::string requireSharedData(const std::string& relative)
 {
     const char* env = std::getenv("OPENCV_EVENT_SHARED_DATA");
-    const std::string root = env && *env ? std::string(env) : std::string(OPENCV_EVENT_SHARED_DATA_DEFAULT);
+    const std::string root = env && *env ? std::string(env) : std::string(sharedDataDefault());
     const std::string path = root + "/" + relative;
     struct stat st;
     if (::stat(path.c_str(), &st) != 0)
