@@ -82,16 +82,23 @@ inline bool touchesColumnOrRowZero(const std::vector<EventT>& events)
 
 /** "a=1,b=2" -> {(a, 1), (b, 2)}: the value of list options such as --set. Empty items are skipped; an item
     that is not NAME=VALUE throws std::runtime_error naming @p option. */
+/** The items of a comma-separated option value ("boxes,walking"), empty ones left out. */
+inline std::vector<std::string> commaList(const std::string& text)
+{
+    std::vector<std::string> items;
+    std::stringstream list(text);
+    for (std::string item; std::getline(list, item, ',');)
+        if (!item.empty())
+            items.push_back(item);
+    return items;
+}
+
 inline std::vector<std::pair<std::string, std::string>> parseNameValueList(const std::string& option,
                                                                            const std::string& list)
 {
     std::vector<std::pair<std::string, std::string>> out;
-    std::stringstream items(list);
-    std::string item;
-    while (std::getline(items, item, ','))
+    for (const std::string& item : commaList(list))
     {
-        if (item.empty())
-            continue;
         const size_t eq = item.find('=');
         if (eq == std::string::npos || eq == 0)
             throw std::runtime_error(option + ": \"" + item + "\" is not NAME=VALUE");

@@ -17,7 +17,6 @@
 #include <cmath>
 #include <cstdio>
 #include <iostream>
-#include <sstream>
 #include <string>
 #include <vector>
 
@@ -25,16 +24,6 @@ using namespace cv;
 using namespace cv::event;
 
 namespace {
-
-std::vector<std::string> splitList(const std::string& text)
-{
-    std::vector<std::string> items;
-    std::stringstream list(text);
-    for (std::string s; std::getline(list, s, ',');)
-        if (!s.empty())
-            items.push_back(s);
-    return items;
-}
 
 // "+9.77 +- 0.05", "+8.15 +- 2.13 (not applied)" or "none" (no estimate at all).
 std::string cell(double estimateUs, double uncertaintyUs)
@@ -62,9 +51,9 @@ int main(int argc, char** argv)
         if (cmd.helpShown())
             return 0;
         const double durationUs = cmd.get<double>("duration-ms") * 1000;
-        const std::vector<std::string> scenes = splitList(cmd.get<std::string>("scenes"));
+        const std::vector<std::string> scenes = commaList(cmd.get<std::string>("scenes"));
         std::vector<double> clocksMs;
-        for (const std::string& c : splitList(cmd.get<std::string>("clocks-ms")))
+        for (const std::string& c : commaList(cmd.get<std::string>("clocks-ms")))
             clocksMs.push_back(std::stod(c));
 
         std::cout << "| scene | right clock as simulated |";

@@ -15,13 +15,13 @@
 #include <opencv2/core/utility.hpp>
 #include <opencv2/event.hpp>
 
+#include "command_line.hpp"
 #include "test_simulator_helpers.hpp"  // the bars experiment, shared with the unit tests
 #include "test_stereo_scene_runs.hpp"   // the scene runs and their measures, shared with the unit tests
 
 #include <algorithm>
 #include <cstdio>
 #include <functional>
-#include <sstream>
 #include <string>
 #include <vector>
 
@@ -141,9 +141,7 @@ int main(int argc, char** argv)
         return 0;
     }
     const std::string figures = parser.get<std::string>("figures");
-    std::stringstream list(figures);
-    std::string name;
-    while (std::getline(list, name, ','))
+    for (const std::string& name : commaList(figures))
     {
         if (name == "prior")
         {

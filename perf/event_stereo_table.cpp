@@ -339,9 +339,7 @@ int main(int argc, char** argv)
     try
     {
         std::vector<Recording> recordings;
-        std::stringstream list(scenes);
-        std::string scene;
-        while (std::getline(list, scene, ','))
+        for (const std::string& scene : commaList(scenes))
         {
             std::cerr << "simulating " << scene << " (" << durationMs << " ms)...\n";
             recordings.push_back(simulated(scene, durationMs, sensorModel));
@@ -363,12 +361,8 @@ int main(int argc, char** argv)
         speed << "| recording | mode | Mev/s | latency p50 | latency p99 | memory added |\n|---|---|---|---|---|---|\n";
         bands << "| recording | mode | threads | Mev/s | speed-up | outputs identical to 1 thread |\n|---|---|---|---|---|---|\n";
         std::vector<int> threadCounts;
-        {
-            std::stringstream t(threadList);
-            std::string item;
-            while (std::getline(t, item, ','))
-                threadCounts.push_back(std::stoi(item));
-        }
+        for (const std::string& item : commaList(threadList))
+            threadCounts.push_back(std::stoi(item));
         for (const Recording& rec : recordings)
         {
             std::cerr << "running " << rec.name << " (" << rec.events << " events)...\n";

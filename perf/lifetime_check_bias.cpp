@@ -15,7 +15,6 @@
 #include <cstdio>
 #include <functional>
 #include <iostream>
-#include <sstream>
 #include <string>
 #include <vector>
 
@@ -98,10 +97,7 @@ int main(int argc, char** argv)
             return 0;
         const double durationUs = cmd.get<double>("duration-ms") * 1000;
         const int sensorModel = sceneSensorModel(cmd.get<std::string>("sensor"));
-        std::vector<std::string> scenes;
-        std::stringstream list(cmd.get<std::string>("scenes"));
-        for (std::string s; std::getline(list, s, ',');)
-            scenes.push_back(s);
+        const std::vector<std::string> scenes = commaList(cmd.get<std::string>("scenes"));
 
         const std::vector<Variant> variants = {
             { "as built", [](SimulatorSettings&) {} },

@@ -21,7 +21,6 @@
 #include <algorithm>
 #include <cstdio>
 #include <iostream>
-#include <sstream>
 
 using namespace cv;
 using namespace cv::event;
@@ -232,11 +231,7 @@ int main(int argc, char** argv)
         durationMs = cmd.get<double>("duration-ms");
         if (cmd.has("sensor"))
             sensor = parseSensorSize(cmd.get<std::string>("sensor"));
-        std::stringstream list(cmd.get<std::string>("scene"));
-        std::string scene;
-        while (std::getline(list, scene, ','))
-            if (!scene.empty())
-                scenes.push_back(scene);
+        scenes = commaList(cmd.get<std::string>("scene"));
         if (!scenes.empty() && cmd.has("sensor"))
             sceneModel = sceneSensorModel(cmd.get<std::string>("sensor"));
         files = cmd.positionals();
