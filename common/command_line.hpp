@@ -80,8 +80,6 @@ inline bool touchesColumnOrRowZero(const std::vector<EventT>& events)
     return false;
 }
 
-/** "a=1,b=2" -> {(a, 1), (b, 2)}: the value of list options such as --set. Empty items are skipped; an item
-    that is not NAME=VALUE throws std::runtime_error naming @p option. */
 /** The items of a comma-separated option value ("boxes,walking"), empty ones left out. */
 inline std::vector<std::string> commaList(const std::string& text)
 {
@@ -93,6 +91,8 @@ inline std::vector<std::string> commaList(const std::string& text)
     return items;
 }
 
+/** "a=1,b=2" -> {(a, 1), (b, 2)}: the value of list options such as --set. Empty items are skipped; an item
+    that is not NAME=VALUE throws std::runtime_error naming @p option. */
 inline std::vector<std::pair<std::string, std::string>> parseNameValueList(const std::string& option,
                                                                            const std::string& list)
 {
