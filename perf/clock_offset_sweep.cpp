@@ -9,6 +9,7 @@
 // tell an offset from a disparity, the estimate should say so (an uncertainty above 0.5 ms: event_stereo then
 // does not apply it).
 
+#include "clock_offset_policy.hpp"
 #include "command_line.hpp"
 #include "test_simulator_helpers.hpp"
 
@@ -32,7 +33,7 @@ std::string cell(double estimateUs, double uncertaintyUs)
     if (!std::isfinite(uncertaintyUs))
         return "none";
     std::snprintf(text, sizeof(text), "%+.2f +- %.2f%s", estimateUs / 1000, uncertaintyUs / 1000,
-                  uncertaintyUs <= 500 ? "" : " (not applied)");
+                  uncertaintyUs <= kSampleMaxClockUncertaintyUs ? "" : " (not applied)");
     return text;
 }
 
@@ -65,9 +66,9 @@ int main(int argc, char** argv)
         std::cout << "\n";
         for (const std::string& scene : scenes)
         {
-            const Size size = StereoEventSimulator::create(scene)->getSensorSize();
-            const double own = StereoEventSimulator::create(scene)->getSettings().rightClockOffsetUs;
-            std::printf("| %s | %+.1f ms |", scene.c_str(), own / 1000);
+            const Ptr<StereoEventSimulator> built = StereoEventSimulator::create(scene);
+            const Size size = built->getSensorSize();
+            std::printf("| %s | %+.1f ms |", scene.c_str(), built->getSettings().rightClockOffsetUs / 1000);
             for (double c : clocksMs)
             {
                 const std::vector<Event> events = opencv_test::simulateChangedScene(

@@ -7,6 +7,7 @@
 #include <opencv2/event.hpp>
 
 #include "algorithm_settings.hpp"
+#include "clock_offset_policy.hpp"
 #include "sample_stereo_source.hpp"
 
 #include <cmath>
@@ -18,10 +19,6 @@
 /** Below this correlation (cv::event::estimateDominantDisparity()) the events do not say where they line up:
     the threshold cv::event::checkStereoPair() uses, for the samples that look at one window at a time. */
 constexpr double kSampleMinLineUpScore = 0.1;
-
-/** Above this uncertainty (cv::event::estimateClockOffset()) the events do not pin a clock offset down well
-    enough to apply it (the half millisecond that moves an edge at 200 px/s by a tenth of a pixel). */
-constexpr double kSampleMaxClockUncertaintyUs = 500;
 
 /** The option that exchanges the cameras: of two files (--left/--right), of a text file's camera column, or of
     any other recording of both cameras. */
