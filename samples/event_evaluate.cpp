@@ -81,7 +81,10 @@ void applySimulatorSetting(SimulatorSettings& s, const std::string& name, double
         { "noiseRateHz", &s.noiseRateHz }, { "latencyUs", &s.latencyUs }, { "latencySigmaUs", &s.latencySigmaUs },
         { "jitterUs", &s.jitterUs }, { "hotPixelShare", &s.hotPixelShare }, { "hotPixelRateHz", &s.hotPixelRateHz },
         { "leakRateHz", &s.leakRateHz }, { "rightRowOffset", &s.rightRowOffset }, { "rightRollRad", &s.rightRollRad },
-        { "maxPixelStep", &s.maxPixelStep }, { "flickerFrequencyHz", &s.flickerFrequencyHz }
+        { "maxPixelStep", &s.maxPixelStep }, { "flickerFrequencyHz", &s.flickerFrequencyHz },
+        { "rightClockOffsetUs", &s.rightClockOffsetUs }, { "rightClockDriftPpm", &s.rightClockDriftPpm },
+        { "extraLatencyUs.leftOn", &s.extraLatencyUs[0] }, { "extraLatencyUs.leftOff", &s.extraLatencyUs[1] },
+        { "extraLatencyUs.rightOn", &s.extraLatencyUs[2] }, { "extraLatencyUs.rightOff", &s.extraLatencyUs[3] }
     };
     for (const auto& f : fields)
         if (name == f.first)

@@ -5,15 +5,29 @@
 # failing shard's (0 when all pass).
 #
 #   test/gtest_shards.sh PROGRAM [gtest arguments ...]
+#   GTEST_SHARD_FILTERS='FILTER;FILTER;...' test/gtest_shards.sh PROGRAM [gtest arguments ...]
+#
+# With GTEST_SHARD_FILTERS each shard is one process running one of the given --gtest_filter patterns: for a
+# few long tests that gtest's round robin would put on the same shard.
 set -uo pipefail
 [ $# -gt 0 ] || { echo "usage: gtest_shards.sh PROGRAM [arguments ...]" >&2; exit 2; }
-shards=$(nproc)
-[ "$shards" -le 8 ] || shards=8
+filters=()
+if [ -n "${GTEST_SHARD_FILTERS:-}" ]; then
+  IFS=';' read -r -a filters <<< "$GTEST_SHARD_FILTERS"
+  shards=${#filters[@]}
+else
+  shards=$(nproc)
+  [ "$shards" -le 8 ] || shards=8
+fi
 logs=$(mktemp -d)
 trap 'rm -rf "$logs"' EXIT
 pids=()
 for ((i = 0; i < shards; i++)); do
-  GTEST_TOTAL_SHARDS=$shards GTEST_SHARD_INDEX=$i "$@" > "$logs/$i.log" 2>&1 &
+  if [ ${#filters[@]} -gt 0 ]; then
+    "$@" --gtest_filter="${filters[$i]}" > "$logs/$i.log" 2>&1 &
+  else
+    GTEST_TOTAL_SHARDS=$shards GTEST_SHARD_INDEX=$i "$@" > "$logs/$i.log" 2>&1 &
+  fi
   pids+=($!)
 done
 status=0
@@ -22,6 +36,10 @@ for ((i = 0; i < shards; i++)); do
   s=$?
   echo "== gtest_shards: shard $((i + 1)) of $shards, status $s"
   cat "$logs/$i.log"
+  if [ ${#filters[@]} -gt 0 ] && ! grep -q '^\[  PASSED  \] [1-9]' "$logs/$i.log" && [ "$s" = 0 ]; then
+    echo "== gtest_shards: no test matches --gtest_filter=${filters[$i]}"
+    s=1
+  fi
   [ "$status" != 0 ] || status=$s
 done
 exit "$status"
