@@ -66,7 +66,7 @@ const char* const keys =
     "{live-ms           | 0          | stop a live run after this much camera time [ms]; 0: until the cameras stop}"
     "{record            |            | also write the events as read (before --filter) to this file: .aedat4, else text with a camera column; a simulated scene with its ground truth in FILE.gt.csv}"
     "{calib             |            | stereo calibration (FileStorage: K1 D1 K2 D2 R T, image size)}"
-    "{sensor            |            | sensor size WxH or a name (DVS128, DAVIS240, DAVIS346) when the format has none}"
+    "{sensor            |            | sensor size WxH or a name (DVS128, DAVIS240, DAVIS346) when the format has none; the model --scene is simulated on (default DAVIS240)}"
     "{left-camera-value | 0          | the camera column's value that means left, in text recordings}"
     "{one-based         | false      | text recordings count pixels from 1}"
     "{right-time-offset-ms | auto    | added to the right camera's timestamps [ms]; auto: estimated from the first seconds of events (estimateClockOffset) and applied when the events are clear about it}"
@@ -123,6 +123,8 @@ bool parse(int argc, char** argv, Options& o)
     o.allFrames = cmd.has("all-frames");
     o.output = cmd.get<std::string>("output");
     o.scene = cmd.get<std::string>("scene");
+    if (o.input.empty() && o.left.empty() && !o.live && cmd.has("sensor"))
+        o.sceneModel = sceneSensorModel(cmd.get<std::string>("sensor"));
     o.durationMs = cmd.get<double>("duration-ms");
     o.settings = cmd.get<std::string>("set");
     o.filter = cmd.get<std::string>("filter");

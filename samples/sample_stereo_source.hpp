@@ -20,6 +20,7 @@ struct StereoSourceOptions
     bool live = false, oneBased = false;
     double liveMs = 0, durationMs = 0, frameMs = 0, rightTimeOffsetMs = 0;
     cv::Size sensor;
+    int sceneModel = cv::event::SENSOR_DAVIS240;  // the sensor model the scene is simulated on
     int leftCameraValue = 0;
 };
 
@@ -45,7 +46,7 @@ public:
     {
         if (o.input.empty() && o.left.empty() && !o.live)
         {
-            sim_ = cv::event::StereoEventSimulator::create(o.scene);
+            sim_ = cv::event::StereoEventSimulator::create(o.scene, o.sceneModel);
             if (o.rightTimeOffsetMs != 0)
             {
                 // The simulated right camera restamped as a capture would do it.

@@ -478,3 +478,45 @@ TEST(Event_Simulator, a_fans_blade_edges_live_one_over_the_angular_speed_times_t
 }
 
 }}  // namespace
+
+namespace opencv_test { namespace {
+
+// The pendulum's ball passes its lowest point, 0.42 m away, every half period (0.875 s), at disparity f B /
+// 0.42; a quarter period after a pass going away it is at its farthest (0.61 m: 16.8 px on a DVS128), three
+// quarters after at its nearest (0.25 m: 40.3 px at its centre). Bounds with a margin for the ball's extent.
+TEST(Event_Simulator, a_pendulums_ball_passes_its_lowest_depth_every_half_period_and_swings_both_ways)
+{
+    Ptr<StereoEventSimulator> sim = StereoEventSimulator::create("pendulum", SENSOR_DVS128);
+    const SimulatorSettings& s = sim->getSettings();
+    std::vector<Event> ev;
+    Mat gt;
+    sim->generate(3500000, ev, gt);
+    const double period = 1750000, fb = s.focalLength * s.baseline;
+    // The median true disparity of the left camera's ball and string events (the wall at 1.5 m is 6.8 px) within
+    // `halfWidth` of `t`.
+    const auto disparityAt = [&](double t, double halfWidth) {
+        std::vector<float> d;
+        for (size_t i = 0; i < ev.size(); i++)
+        {
+            const float* g = gt.ptr<float>((int)i);
+            if (ev[i].camera == CAMERA_LEFT && std::abs((double)ev[i].t - t) <= halfWidth && g[GT_DISPARITY] > 10 &&
+                !((int)g[GT_FLAGS] & GT_FLAG_NOISE))
+                d.push_back(g[GT_DISPARITY]);
+        }
+        if (d.size() < 10)
+            return -1.0f;
+        std::nth_element(d.begin(), d.begin() + d.size() / 2, d.end());
+        return d[d.size() / 2];
+    };
+    for (int pass = 0; pass < 4; pass++)
+        EXPECT_NEAR(fb / 0.42, disparityAt(pass * period / 2, 15000), 0.3) << "pass " << pass;
+    for (int swing = 0; swing < 2; swing++)
+    {
+        const float far = disparityAt((swing + 0.25) * period, 50000);
+        EXPECT_GT(far, 0) << "swing " << swing << ": the far end fires";
+        EXPECT_LT(far, fb / 0.55) << "swing " << swing << ": the far end";
+        EXPECT_GT(disparityAt((swing + 0.75) * period, 50000), fb / 0.28) << "swing " << swing << ": the near end";
+    }
+}
+
+}}  // namespace

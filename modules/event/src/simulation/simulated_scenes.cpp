@@ -6,6 +6,7 @@
 
 #include "precomp.hpp"
 #include "simulation/simulated_scenes.hpp"
+#include "opencv2/calib3d.hpp"
 
 namespace cv {
 namespace event {
@@ -311,6 +312,49 @@ std::vector<SimulatedPlane> simulatedScene(const String& name, int sensorModel, 
         }
         realSensor(s, sensorModel);
     }
+    else if (name == "pendulum")
+    {
+        // A dark ball (an octagon 5 cm across) on a string swinging towards and away from the left camera in
+        // front of a plain wall 1.5 m away, as in the TUM pendulum recording: 0.24-0.60 m away (disparity 42-17
+        // px on a DVS128), +-50 degrees every 1.75 s on a 0.24 m string, in the vertical plane through the left
+        // camera's centre along its line of sight x = 0.254 z (column 90 of 128), the camera tilted 8 degrees
+        // up. The left camera sees the ball grow and shrink and move up and down, lowest mid-swing; the right
+        // one sees it move along the rows as well.
+        const double k = 0.254, zMid = 0.42, yMid = 0.12, amplitude = 50 * CV_PI / 180, pitch = -8 * CV_PI / 180;
+        const double length = 0.18 * std::sqrt(1 + k * k) / std::sin(amplitude);
+        planes.push_back(uniformPlane(Vec3d(0, 0, 1.5), Vec2d(2, 2), 0.5));
+        // Gravity in the camera's frame, and the swing's axis: level, across the line of sight, so that a
+        // positive angle takes the ball away from the camera.
+        const Vec3d down(0, std::cos(pitch), std::sin(pitch));
+        const Vec3d axis = normalize(down.cross(Vec3d(k, 0, 1)));
+        const Vec3d ball(k * zMid, yMid, zMid);
+        std::vector<SimulatedPlane> parts;
+        for (int side = 0; side < 2; side++)  // two squares, the second turned by 45 degrees: an octagon
+        {
+            SimulatedPlane half = uniformPlane(ball, Vec2d(0.025, 0.025), 0.2);
+            const double turn = side * CV_PI / 4;
+            Vec3d rotation;
+            Rodrigues(Matx33d(1, 0, 0, 0, std::cos(pitch), -std::sin(pitch), 0, std::sin(pitch), std::cos(pitch)) *
+                          Matx33d(std::cos(turn), -std::sin(turn), 0, std::sin(turn), std::cos(turn), 0, 0, 0, 1),
+                      rotation);
+            half.rotation = rotation;
+            // The pivot, straight above the ball, in the turned square's own coordinates.
+            half.swingPivot = Vec2d(-length * std::sin(turn), -length * std::cos(turn));
+            parts.push_back(half);
+        }
+        SimulatedPlane string = uniformPlane(ball - 0.5 * length * down, Vec2d(0.0015, 0.5 * length), 0.2);
+        string.rotation = Vec3d(pitch, 0, 0);
+        string.swingPivot = Vec2d(0, -0.5 * length);
+        parts.push_back(string);
+        for (SimulatedPlane& part : parts)
+        {
+            part.swingAxis = axis;
+            part.swingAmplitude = amplitude;
+            part.swingFrequency = 1 / 1.75;
+            planes.push_back(part);
+        }
+        realSensor(s, sensorModel);
+    }
     else if (name == "low_contrast")
     {
         // A faintly textured plane (log contrast up to 0.36, about one threshold) sliding over a plain wall.
@@ -334,7 +378,7 @@ std::vector<SimulatedPlane> simulatedScene(const String& name, int sensorModel, 
 std::vector<String> simulatedSceneNames()
 {
     return std::vector<String>{ "plane", "two_planes", "moving_line", "faint_line", "cluttered",
-                                "boxes", "boxes_fast", "walking", "walking_near", "low_contrast", "fan", "boxes_flicker",
+                                "boxes", "boxes_fast", "walking", "walking_near", "low_contrast", "fan", "pendulum", "boxes_flicker",
                                 "boxes_pair", "boxes_fast_pair", "walking_pair" };
 }
 

@@ -163,6 +163,9 @@ Named scenes (create()):
 - "fan": a small four-bladed fan 1 m away turning at 25 revolutions per second, its blades under two thresholds
   brighter than the wall behind, with the same real sensor's departures (the fan of the TUM DVS128 pairs, on a
   DVS128);
+- "pendulum": a dark ball 5 cm across on a string swinging towards and away from the left camera, 0.24-0.60 m
+  away, every 1.75 s, over a plain wall, with the same real sensor's departures (the pendulum of the TUM DVS128
+  pairs, on a DVS128: disparity 17-42 px);
 - "boxes_pair", "boxes_fast_pair", "walking_pair": boxes slid to and fro (their faces turned a little, so that
   their disparities fall between whole pixels) and the walking figure 1.8 m away in front of a patterned wall,
   as a real DAVIS240 pair records them: thicker, dotted edges, more OFF than ON events, sensors of different
