@@ -342,10 +342,10 @@ std::vector<SimulatedPlane> simulatedScene(const String& name, int sensorModel, 
             half.swingPivot = Vec2d(-length * std::sin(turn), -length * std::cos(turn));
             parts.push_back(half);
         }
-        SimulatedPlane string = uniformPlane(ball - 0.5 * length * down, Vec2d(0.0015, 0.5 * length), 0.2);
-        string.rotation = Vec3d(pitch, 0, 0);
-        string.swingPivot = Vec2d(0, -0.5 * length);
-        parts.push_back(string);
+        SimulatedPlane cord = uniformPlane(ball - 0.5 * length * down, Vec2d(0.0015, 0.5 * length), 0.2);
+        cord.rotation = Vec3d(pitch, 0, 0);
+        cord.swingPivot = Vec2d(0, -0.5 * length);
+        parts.push_back(cord);
         for (SimulatedPlane& part : parts)
         {
             part.swingAxis = axis;
@@ -378,8 +378,8 @@ std::vector<SimulatedPlane> simulatedScene(const String& name, int sensorModel, 
 std::vector<String> simulatedSceneNames()
 {
     return std::vector<String>{ "plane", "two_planes", "moving_line", "faint_line", "cluttered",
-                                "boxes", "boxes_fast", "walking", "walking_near", "low_contrast", "fan", "pendulum", "boxes_flicker",
-                                "boxes_pair", "boxes_fast_pair", "walking_pair" };
+                                "boxes", "boxes_fast", "walking", "walking_near", "low_contrast", "fan", "pendulum",
+                                "boxes_flicker", "boxes_pair", "boxes_fast_pair", "walking_pair" };
 }
 
 }  // namespace detail
