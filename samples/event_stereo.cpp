@@ -123,7 +123,7 @@ bool parse(int argc, char** argv, Options& o)
     o.allFrames = cmd.has("all-frames");
     o.output = cmd.get<std::string>("output");
     o.scene = cmd.get<std::string>("scene");
-    if (o.input.empty() && o.left.empty() && !o.live && cmd.has("sensor"))
+    if (o.simulated() && cmd.has("sensor"))
         o.sceneModel = sceneSensorModel(cmd.get<std::string>("sensor"));
     o.durationMs = cmd.get<double>("duration-ms");
     o.settings = cmd.get<std::string>("set");

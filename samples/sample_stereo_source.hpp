@@ -22,6 +22,9 @@ struct StereoSourceOptions
     cv::Size sensor;
     int sceneModel = cv::event::SENSOR_DAVIS240;  // the sensor model the scene is simulated on
     int leftCameraValue = 0;
+
+    /** No recording and no live pair: the events come from the simulator. */
+    bool simulated() const { return input.empty() && left.empty() && !live; }
 };
 
 // Why a recording of this back-end holds one camera, in its own terms.
@@ -44,7 +47,7 @@ class SampleStereoSource
 public:
     explicit SampleStereoSource(const StereoSourceOptions& o)
     {
-        if (o.input.empty() && o.left.empty() && !o.live)
+        if (o.simulated())
         {
             sim_ = cv::event::StereoEventSimulator::create(o.scene, o.sceneModel);
             if (o.rightTimeOffsetMs != 0)

@@ -104,8 +104,8 @@ echo "== sanitizers: StereoEventMatcher's row bands and the live cameras' thread
 # event; cluttered COUPLED on 2, 3 and 7 threads): under TSan each runs 20-40 times slower, and these three
 # take every path of the bands (waits both ways, expiries, outside events, a failing packet). The live path on
 # its fakes: USB callbacks on a control request's thread while the reader thread reads, the reader threads of
-# a stereo pair, their clock arming and shutdown (a few seconds). Two shards of about equal length (cluttered
-# COUPLED alone, 4-5 min here): gtest's round robin put it with the longest of the others.
+# a stereo pair, their clock arming and shutdown (a few seconds). Two shards: cluttered COUPLED, the longest,
+# alone on one and the rest on the other (gtest's round robin put it beside the next longest).
 GTEST_SHARD_FILTERS='StereoEventMatcher_RowBands.give_the_results_of_one_thread_bit_for_bit/3;StereoEventMatcher.row_bands_*:Event_UsbLinkDevice.*:Event_Capture_Davis.*' \
   TSAN_OPTIONS=halt_on_error=1 bash "$here/gtest_shards.sh" "$tsan/modules/event/opencv_test_event"
 echo "== sanitizers: clean"
