@@ -1,11 +1,11 @@
 #!/usr/bin/env bash
 # ctest `sanitizers`: the library, opencv_test_event and the samples built with AddressSanitizer and
-# UndefinedBehaviorSanitizer (gcc), then the unit tests (all but the long accuracy runs, below) and the samples
-# run under them. Any memory error, leak or undefined
-# behaviour aborts the run. Then the library and opencv_test_event built with ThreadSanitizer (build-tsan/),
-# running StereoEventMatcher's row bands on several threads and the live cameras' threads on their fake USB:
-# any data race aborts the run. The build dir is inside the clone (build-sanitizers/, ignored by git) and ccache
-# runs with CCACHE_BASEDIR = the clone, so a fresh clone compiles from the cache.
+# UndefinedBehaviorSanitizer (gcc), then the unit tests (all but the long accuracy runs: long_tests.sh) and the
+# samples run under them. Any memory error, leak or undefined behaviour aborts the run. Then the library and
+# opencv_test_event built with ThreadSanitizer (build-tsan/), running StereoEventMatcher's row bands on several
+# threads and the live cameras' threads on their fake USB: any data race aborts the run. The build dir is inside
+# the clone (build-sanitizers/, ignored by git) and ccache runs with CCACHE_BASEDIR = the clone, so a fresh clone
+# compiles from the cache.
 #
 #   test/sanitizers.sh <opencv-source-dir> [build-dir]
 set -euo pipefail
@@ -35,35 +35,10 @@ echo "== sanitizers: opencv_test_event under ASan + UBSan"
 export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1:strict_string_checks=1
 export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
 export LSAN_OPTIONS=suppressions="$here/lsan.supp"
-# Every unit test except the accuracy figures on long simulated runs (4-23 s each in Release, 6-16 times that
-# here: the row alignment test took 35 s, the temporal prior's 69 s, the clock estimate's scenes 160-180 s).
-# They run in the normal unit test job; under the sanitizers their code paths are taken by the shorter tests
-# (the row bands' scenes, process() against processEvent(), the look-ahead and border closed forms, the filling
-# on 400 ms of a pair, the clock estimate's one-line scene, the lifetime quality's closed forms) and by the
-# realistic scene below.
-skipped='StereoEventMatcher.coupled_beats_frame_sgbm_on_textured_scenes'
-skipped+=':StereoEventMatcher.lifetime_modes_estimate_as_many_events_as_fixed_interval_from_the_start'
-skipped+=':StereoEventMatcher.textured_scenes_meet_the_accuracy_and_density_targets'
-skipped+=':StereoEventMatcher_Confidence.temporal_prior_raises_the_matching_rate_on_sparse_edges'
-skipped+=':StereoEventMatcher_Confidence.rejection_is_the_threshold_and_the_confidence_ranks_the_estimates'
-skipped+=':StereoEventMatcher_LookAhead.raises_the_matching_rate_on_low_contrast'
-skipped+=':Event_RowAlignment.finds_the_simulated_row_offset_and_roll'
-skipped+=':StereoEventMatcher.coupled_lifetimes_passed_on_without_limit_keep_the_start_up_ones'
-skipped+=':StereoEventMatcher.coupled_lifetimes_are_refitted_after_a_copy_on_changing_speeds'
-skipped+=':StereoEventMatcher.coupled_leads_frame_sgbm_by_ten_points_on_the_near_walker'
-skipped+=':StereoEventMatcher_Confidence.an_uncertain_match_does_not_override_the_events_own_plane'
-skipped+=':Event_ClockOffset.a_right_clock_moved_by_a_known_amount_moves_the_estimate_by_as_much'
-skipped+=':Event_ClockOffset.a_walking_figure_tells_a_moved_clock_and_says_how_sure_it_is_of_its_own'
-skipped+=':Event_ClockOffset.objects_that_each_move_at_one_speed_get_no_confident_wrong_offset'
-skipped+=':StereoEventMatcher_Filling.puts_the_events_one_camera_misses_where_the_surface_around_them_is'
-skipped+=':Event_LifetimeQuality.ranks_the_lifetimes_by_their_error_against_the_simulated_truth'
-# The row bands against one thread: one of the six scene x mode cases (two_planes COUPLED, about 3 min of one
-# core here). The bands' code is the same in every mode; every mode on one and two threads runs in
-# lifetime_time_is_counted_only_when_on_and_changes_no_output (cluttered, 60 ms), the modes' own code in the
-# single-thread tests, and cluttered COUPLED under TSan below.
-for case in 1 2 3 4 5; do
-  skipped+=":StereoEventMatcher_RowBands.give_the_results_of_one_thread_bit_for_bit/$case"
-done
+# Every unit test except the accuracy figures on long simulated runs (long_tests.sh) and the row bands against
+# one thread (all six scene x mode cases: cluttered COUPLED runs under TSan below).
+source "$here/long_tests.sh"
+skipped="$long_accuracy_tests:$(row_band_cases 0 1 2 3 4 5)"
 bash "$here/gtest_shards.sh" "$build/modules/event/opencv_test_event" --gtest_filter="-$skipped"
 echo "== sanitizers: samples on the simulator and on every real recording"
 work=$(mktemp -d)
