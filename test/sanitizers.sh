@@ -72,6 +72,7 @@ cmake -S "$repo" -B "$tsan" "${generator[@]}" "${launcher[@]}" -DCMAKE_BUILD_TYP
   -DCMAKE_CXX_FLAGS="$tflags" -DCMAKE_C_FLAGS="$tflags" -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=thread" \
   -DCMAKE_SHARED_LINKER_FLAGS="-fsanitize=thread" \
   -DOPENCV_EVENT_OPENCV_SOURCE_DIR="$src" -DOPENCV_EVENT_BUILD_CONTRIB_TEST=OFF -DOPENCV_EVENT_BUILD_PERF_TESTS=OFF -DOPENCV_EVENT_BUILD_PYTHON=OFF \
+  -DOPENCV_EVENT_TEST_FILES="test_main.cpp;test_stereo_row_bands.cpp;test_event_capture_davis.cpp;test_usb_link_device.cpp" \
   > "$tsan.configure.log" 2>&1 || { tail -40 "$tsan.configure.log"; exit 1; }
 cmake --build "$tsan" --target opencv_test_event > "$tsan.build.log" 2>&1 || { tail -60 "$tsan.build.log"; exit 1; }
 echo "== sanitizers: StereoEventMatcher's row bands and the live cameras' threads under TSan"
