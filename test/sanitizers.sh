@@ -27,6 +27,7 @@ cmake -S "$repo" -B "$build" "${generator[@]}" "${launcher[@]}" -DCMAKE_BUILD_TY
   -DCMAKE_CXX_FLAGS="$flags" -DCMAKE_C_FLAGS="$flags" -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=address,undefined" \
   -DCMAKE_SHARED_LINKER_FLAGS="-fsanitize=address,undefined" \
   -DOPENCV_EVENT_OPENCV_SOURCE_DIR="$src" -DOPENCV_EVENT_BUILD_CONTRIB_TEST=OFF -DOPENCV_EVENT_BUILD_PERF_TESTS=OFF -DOPENCV_EVENT_BUILD_PYTHON=OFF \
+  -DOPENCV_EVENT_TEST_COMPILE_OPTIONS=-O0 \
   > "$build.configure.log" 2>&1 || { tail -40 "$build.configure.log"; exit 1; }
 # Only what runs below: the other samples and the benchmark programs would compile for nothing.
 cmake --build "$build" --target opencv_test_event event_stereo_overview event_evaluate event_info \
