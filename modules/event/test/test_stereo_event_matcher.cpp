@@ -271,7 +271,7 @@ static std::vector<std::vector<double>> coupledLifetimeRatios(const std::string&
     return ratios;
 }
 
-static double median(std::vector<double> v)
+static double medianOfMany(std::vector<double> v)
 {
     CV_Assert(v.size() > 10000);
     std::nth_element(v.begin(), v.begin() + v.size() / 2, v.end());
@@ -285,7 +285,7 @@ static double coupledLifetimeError(const std::string& scene, bool copiedWithoutL
     std::vector<double> errors = coupledLifetimeRatios(scene, copiedWithoutLimit, 600, 600)[0];
     for (double& e : errors)
         e = std::abs(e - 1);
-    return median(errors);
+    return medianOfMany(errors);
 }
 
 TEST(StereoEventMatcher, coupled_lifetimes_are_refitted_after_a_copy_on_changing_speeds)
@@ -309,7 +309,7 @@ static std::vector<double> planeLifetimeRatios(bool copiedWithoutLimit, int ms)
 {
     std::vector<double> medians;
     for (const std::vector<double>& r : coupledLifetimeRatios("plane", copiedWithoutLimit, ms, 100))
-        medians.push_back(median(r));
+        medians.push_back(medianOfMany(r));
     return medians;
 }
 
