@@ -2,7 +2,7 @@
 // It is subject to the license terms in the LICENSE file found in the top-level directory
 // of this distribution and at http://opencv.org/license.html.
 
-// Helpers of opencv_test_event: reading a capture whole, writing fixture files, a synthetic moving edge.
+// Helpers of opencv_test_event: reading a capture whole, writing fixture files, a synthetic moving edge, a median.
 
 #ifndef OPENCV_EVENT_TEST_EVENT_HELPERS_HPP
 #define OPENCV_EVENT_TEST_EVENT_HELPERS_HPP
@@ -18,6 +18,14 @@
 #include <vector>
 
 namespace opencv_test {
+
+/** The median of @p v (the upper one of an even count); @p v must not be empty. */
+inline double median(std::vector<double> v)
+{
+    CV_Assert(!v.empty());
+    std::nth_element(v.begin(), v.begin() + (std::ptrdiff_t)(v.size() / 2), v.end());
+    return v[v.size() / 2];
+}
 
 /** Every event @p cap delivers appended to @p all, read in batches of @p batch events (batches that need not
 line up with the file's own packets), packet by packet: when read() raises (a file cut off mid-record), @p all

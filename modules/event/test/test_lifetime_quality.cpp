@@ -20,13 +20,6 @@ QualityRun runQuality(Ptr<LifetimeEstimator> est, const std::vector<Event>& even
     return r;
 }
 
-double median(std::vector<double> v)
-{
-    CV_Assert(!v.empty());
-    std::nth_element(v.begin(), v.begin() + v.size() / 2, v.end());
-    return v[v.size() / 2];
-}
-
 // On a plane that every event lies on, the refit leaves no residual: the quality is 1 / (1 + 1 / (n - 2)) for the
 // n inliers it rests on, so n = 2 + q / (1 - q) comes out a whole number of the window's pixels. Timing jitter
 // adds the residuals' relative error and lowers it.

@@ -274,8 +274,7 @@ static std::vector<std::vector<double>> coupledLifetimeRatios(const std::string&
 static double medianOfMany(std::vector<double> v)
 {
     CV_Assert(v.size() > 10000);
-    std::nth_element(v.begin(), v.begin() + v.size() / 2, v.end());
-    return v[v.size() / 2];
+    return median(std::move(v));
 }
 
 // COUPLED's median relative lifetime error over the signal events with a lifetime, on 600 ms of a walking
