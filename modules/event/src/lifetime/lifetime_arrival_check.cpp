@@ -24,11 +24,15 @@ const double kLowestRatio = 1e-3, kHighestRatio = 1e3;
 const int kBins = 1390;  // ln(1e6) / ln(1.01) = 1388.5, plus the two open ends
 
 // The events that pointed at one pixel (and polarity) since it last fired: up to kClaims, the oldest dropped.
+// Each event claims two pixels along its flow, the neighbour and the pixel beyond it; the claim at one names
+// the other (its partner, as an offset from this pixel) so that only the first of the two to settle it counts.
 const int kClaims = 4;
 struct Claims
 {
     int64 t[kClaims];          // when each event was
     float expectedUs[kClaims]; // its lifetime times this pixel's distance along its flow
+    schar partnerDx[kClaims], partnerDy[kClaims];  // 0, 0: no partner (the pixel beyond is off the sensor)
+    uchar beyond[kClaims];     // the claim at the pixel beyond (2 x the expected time)
     int count = 0;
 };
 
@@ -102,6 +106,7 @@ public:
     void reset() CV_OVERRIDE
     {
         claims_.assign(2 * (size_t)size_.area(), Claims());
+        lastFired_.assign(2 * (size_t)size_.area(), kNone);
         histogram_.assign(kBins, 0);
         samples_ = 0;
         lastTime_ = kNone;
@@ -141,18 +146,37 @@ private:
     void add(const Event& e, float lifetime, float vx, float vy)
     {
         const int p = e.p ? 1 : 0;
-        // This pixel fired: every earlier event that pointed here gets its sample.
-        Claims& here = claims_[(size_t)p * size_.area() + (size_t)e.y * size_.width + e.x];
+        // This pixel fired: every earlier event that pointed here gets its sample, unless the claim's partner
+        // settled it first.
+        const size_t plane = (size_t)p * size_.area();
+        const size_t hereIndex = plane + (size_t)e.y * size_.width + e.x;
+        Claims& here = claims_[hereIndex];
         int kept = 0;
         for (int i = 0; i < here.count; i++)
         {
             if (here.t[i] == e.t)
             {
                 here.t[kept] = here.t[i];  // at the same instant: not yet a delay
-                here.expectedUs[kept++] = here.expectedUs[i];
+                here.expectedUs[kept] = here.expectedUs[i];
+                here.partnerDx[kept] = here.partnerDx[i];
+                here.partnerDy[kept] = here.partnerDy[i];
+                here.beyond[kept++] = here.beyond[i];
                 continue;
             }
+            // The pixel beyond settles a claim only from the time the neighbour was due on (half its own expected
+            // time): before, its firing is not this edge (another edge, noise, clutter). So the neighbour's claim
+            // was settled by the pixel beyond if that fired after the neighbour was due, and the claim beyond by
+            // the neighbour if that fired at all.
             const double ratio = (double)(e.t - here.t[i]) / here.expectedUs[i];
+            if (here.beyond[i] && ratio < 0.5)
+                continue;
+            if (here.partnerDx[i] != 0 || here.partnerDy[i] != 0)
+            {
+                const size_t partner = plane + (size_t)(e.y + here.partnerDy[i]) * size_.width + (e.x + here.partnerDx[i]);
+                const double settledAfter = (double)here.t[i] + (here.beyond[i] ? 0.0 : (double)here.expectedUs[i]);
+                if ((double)lastFired_[partner] > settledAfter)
+                    continue;
+            }
             // The open ends first: a ratio past 1e3 (up to infinity) must not reach the integer conversion.
             const int b = ratio < kLowestRatio ? 0
                         : !(ratio < kHighestRatio) ? kBins - 1
@@ -161,6 +185,8 @@ private:
             samples_++;
         }
         here.count = kept;
+        const int64 previousHere = lastFired_[hereIndex];
+        lastFired_[hereIndex] = e.t;
         const double speed = std::sqrt((double)vx * vx + (double)vy * vy);
         if (!(lifetime > 0) || !(speed > 0) || !std::isfinite(speed) || !std::isfinite(lifetime))
             return;
@@ -176,22 +202,45 @@ private:
         const float expected = (float)(lifetime * (vx * dx + vy * dy) / speed);
         if (!(expected > 0))
             return;
-        Claims& next = claims_[(size_t)p * size_.area() + (size_t)y * size_.width + x];
-        if (next.count == kClaims)
+        // A pixel that fired within the expected time before is still in the same crossing (an edge blurred over
+        // a few pixels fires several events at each): measured from there, the neighbour, already in its own
+        // crossing, would fire early. Only the crossing's first event claims.
+        if (previousHere != kNone && (double)(e.t - previousHere) <= (double)expected)
+            return;
+        // A dotted edge skips pixels: where the neighbour does not fire on this crossing, the pixel beyond it
+        // (twice the time) tells when the edge passed, instead of the neighbour's next crossing.
+        const int x2 = x + dx, y2 = y + dy;
+        const bool beyond = x2 >= 0 && x2 < size_.width && y2 >= 0 && y2 < size_.height;
+        const size_t neighbour = plane + (size_t)y * size_.width + x;
+        addClaim(claims_[neighbour], e.t, expected, beyond ? dx : 0, beyond ? dy : 0, false);
+        if (beyond)
+            addClaim(claims_[plane + (size_t)y2 * size_.width + x2], e.t, 2 * expected, -dx, -dy, true);
+    }
+
+    static void addClaim(Claims& c, int64 t, float expected, int partnerDx, int partnerDy, bool beyond)
+    {
+        if (c.count == kClaims)
         {
             for (int i = 1; i < kClaims; i++)
             {
-                next.t[i - 1] = next.t[i];
-                next.expectedUs[i - 1] = next.expectedUs[i];
+                c.t[i - 1] = c.t[i];
+                c.expectedUs[i - 1] = c.expectedUs[i];
+                c.partnerDx[i - 1] = c.partnerDx[i];
+                c.partnerDy[i - 1] = c.partnerDy[i];
+                c.beyond[i - 1] = c.beyond[i];
             }
-            next.count--;
+            c.count--;
         }
-        next.t[next.count] = e.t;
-        next.expectedUs[next.count++] = expected;
+        c.t[c.count] = t;
+        c.expectedUs[c.count] = expected;
+        c.partnerDx[c.count] = (schar)partnerDx;
+        c.partnerDy[c.count] = (schar)partnerDy;
+        c.beyond[c.count++] = beyond;
     }
 
     Size size_;
     std::vector<Claims> claims_;
+    std::vector<int64> lastFired_;  // per pixel and polarity: the time of its last event
     std::vector<double> histogram_;
     double samples_ = 0;
     int64 lastTime_ = kNone;

@@ -21,17 +21,21 @@ each event with a lifetime L and a flow, the check takes the 8-neighbour the flo
 rounded to 45 degrees) and the time the edge should need to get there, L times the neighbour's distance
 along the flow. When that neighbour next fires an event of the same polarity, the delay over the expected
 time is one sample. Lifetimes that agree with the recording give a median near 1; lifetimes too short give
-more, too long less. Where an edge fires only part of its pixels, or noise fires in between, single samples
-are off by whole crossings; the median and quartiles are the figures to read.
+more, too long less. Where noise fires in between, single samples are off; the median and quartiles are the
+figures to read.
 
-Every event with a lifetime makes a claim, also the later events of a burst; when more than four events point
-at one pixel before it fires, the oldest claims are dropped. Events with no lifetime (0, noise) claim nothing
-but do settle the claims on their pixel.
+A crossing's first event claims, the later events of its burst do not: an event whose pixel fired (same
+polarity) within the expected time before claims nothing, as the neighbour is then already in its own burst.
+An edge that skips pixels is measured at the pixel beyond the neighbour as well (twice the distance): the first
+of the two to fire settles the claim, so that a neighbour missing this crossing does not make the sample a
+crossing too long; the pixel beyond counts only from the time the neighbour was due on (earlier, its firing is
+not this edge). When more than four events point at one pixel before it fires, the oldest claims are
+dropped. Events with no lifetime claim nothing but do settle the claims on their pixel.
 
 Streaming: packets in time order with the LifetimeEstimator outputs that belong to them; memory is O(sensor
-pixels) (up to four claims per pixel and polarity, and a fixed histogram of ratios). Events outside the sensor
-raise cv::Error::StsOutOfRange, time going backwards and outputs of another length raise cv::Error::StsBadArg,
-naming the event. The camera id is not looked at: keep one check per camera.
+pixels) (up to four claims and the last event's time per pixel and polarity, and a fixed histogram of ratios).
+Events outside the sensor raise cv::Error::StsOutOfRange, time going backwards and outputs of another length
+raise cv::Error::StsBadArg, naming the event. The camera id is not looked at: keep one check per camera.
 */
 class CV_EXPORTS_W LifetimeArrivalCheck : public Algorithm
 {
