@@ -7,6 +7,7 @@
 #include "precomp.hpp"
 #include "lifetime/neighbour_along_motion.hpp"
 
+#include <algorithm>
 #include <climits>
 #include <cmath>
 #include <limits>
@@ -26,13 +27,17 @@ const int kBins = 1390;  // ln(1e6) / ln(1.01) = 1388.5, plus the two open ends
 // The events that pointed at one pixel (and polarity) since it last fired: up to kClaims, the oldest dropped.
 // Each event claims two pixels along its flow, the neighbour and the pixel beyond it; the claim at one names
 // the other (its partner, as an offset from this pixel) so that only the first of the two to settle it counts.
+struct Claim
+{
+    int64 t;                     // when the event was
+    float expectedUs;            // its lifetime times this pixel's distance along its flow
+    schar partnerDx, partnerDy;  // 0, 0: no partner (the pixel beyond is off the sensor)
+    bool beyond;                 // the claim at the pixel beyond (2 x the expected time)
+};
 const int kClaims = 4;
 struct Claims
 {
-    int64 t[kClaims];          // when each event was
-    float expectedUs[kClaims]; // its lifetime times this pixel's distance along its flow
-    schar partnerDx[kClaims], partnerDy[kClaims];  // 0, 0: no partner (the pixel beyond is off the sensor)
-    uchar beyond[kClaims];     // the claim at the pixel beyond (2 x the expected time)
+    Claim claim[kClaims];
     int count = 0;
 };
 
@@ -154,26 +159,23 @@ private:
         int kept = 0;
         for (int i = 0; i < here.count; i++)
         {
-            if (here.t[i] == e.t)
+            const Claim c = here.claim[i];
+            if (c.t == e.t)
             {
-                here.t[kept] = here.t[i];  // at the same instant: not yet a delay
-                here.expectedUs[kept] = here.expectedUs[i];
-                here.partnerDx[kept] = here.partnerDx[i];
-                here.partnerDy[kept] = here.partnerDy[i];
-                here.beyond[kept++] = here.beyond[i];
+                here.claim[kept++] = c;  // at the same instant: not yet a delay
                 continue;
             }
             // The pixel beyond settles a claim only from the time the neighbour was due on (half its own expected
             // time): before, its firing is not this edge (another edge, noise, clutter). So the neighbour's claim
             // was settled by the pixel beyond if that fired after the neighbour was due, and the claim beyond by
             // the neighbour if that fired at all.
-            const double ratio = (double)(e.t - here.t[i]) / here.expectedUs[i];
-            if (here.beyond[i] && ratio < 0.5)
+            const double ratio = (double)(e.t - c.t) / c.expectedUs;
+            if (c.beyond && ratio < 0.5)
                 continue;
-            if (here.partnerDx[i] != 0 || here.partnerDy[i] != 0)
+            if (c.partnerDx != 0 || c.partnerDy != 0)
             {
-                const size_t partner = plane + (size_t)(e.y + here.partnerDy[i]) * size_.width + (e.x + here.partnerDx[i]);
-                const double settledAfter = (double)here.t[i] + (here.beyond[i] ? 0.0 : (double)here.expectedUs[i]);
+                const size_t partner = plane + (size_t)(e.y + c.partnerDy) * size_.width + (e.x + c.partnerDx);
+                const double settledAfter = (double)c.t + (c.beyond ? 0.0 : (double)c.expectedUs);
                 if ((double)lastFired_[partner] > settledAfter)
                     continue;
             }
@@ -211,31 +213,21 @@ private:
         // (twice the time) tells when the edge passed, instead of the neighbour's next crossing.
         const int x2 = x + dx, y2 = y + dy;
         const bool beyond = x2 >= 0 && x2 < size_.width && y2 >= 0 && y2 < size_.height;
-        const size_t neighbour = plane + (size_t)y * size_.width + x;
-        addClaim(claims_[neighbour], e.t, expected, beyond ? dx : 0, beyond ? dy : 0, false);
+        addClaim(claims_[plane + (size_t)y * size_.width + x],
+                 Claim{ e.t, expected, (schar)(beyond ? dx : 0), (schar)(beyond ? dy : 0), false });
         if (beyond)
-            addClaim(claims_[plane + (size_t)y2 * size_.width + x2], e.t, 2 * expected, -dx, -dy, true);
+            addClaim(claims_[plane + (size_t)y2 * size_.width + x2],
+                     Claim{ e.t, 2 * expected, (schar)-dx, (schar)-dy, true });
     }
 
-    static void addClaim(Claims& c, int64 t, float expected, int partnerDx, int partnerDy, bool beyond)
+    static void addClaim(Claims& c, const Claim& claim)
     {
         if (c.count == kClaims)
         {
-            for (int i = 1; i < kClaims; i++)
-            {
-                c.t[i - 1] = c.t[i];
-                c.expectedUs[i - 1] = c.expectedUs[i];
-                c.partnerDx[i - 1] = c.partnerDx[i];
-                c.partnerDy[i - 1] = c.partnerDy[i];
-                c.beyond[i - 1] = c.beyond[i];
-            }
+            std::copy(c.claim + 1, c.claim + kClaims, c.claim);
             c.count--;
         }
-        c.t[c.count] = t;
-        c.expectedUs[c.count] = expected;
-        c.partnerDx[c.count] = (schar)partnerDx;
-        c.partnerDy[c.count] = (schar)partnerDy;
-        c.beyond[c.count++] = beyond;
+        c.claim[c.count++] = claim;
     }
 
     Size size_;
