@@ -7,7 +7,7 @@
 //   start_up     plane, 300 ms: COUPLED's median lifetime over the truth per 100 ms, one copy (the default)
 //                and lifetimes passed on by every match without limit
 //   bars         bars sliding over a wall on a 64 x 32 crop of the realistic sensor: the median lifetime over
-//                the closed form 1 / speed, inlierDistance 0.75 (the default) and 0, sharp and blurred bars;
+//                the closed form 1 / speed, the default inlierDistance and 0, sharp and blurred bars;
 //                bars that fire on about half the pixels, with the 100 ms time window and 8 px of travel
 //
 //   design_figures [--figures=prior,beyond_view,start_up,bars]
@@ -28,6 +28,7 @@
 using namespace cv;
 using namespace cv::event;
 using opencv_test::barsLifetimeRatio;
+using opencv_test::defaultInlierDistance;
 
 namespace {
 
@@ -112,14 +113,14 @@ void printBars()
         for (double speed : { 3333.0, 1667.0, 1000.0, 300.0, 100.0 })
         {
             const std::pair<double, double> fixed = barsLifetimeRatio(speed, b.logContrast, b.blurPx, 0);
-            const std::pair<double, double> scaled = barsLifetimeRatio(speed, b.logContrast, b.blurPx, 0.75);
+            const std::pair<double, double> scaled = barsLifetimeRatio(speed, b.logContrast, b.blurPx, defaultInlierDistance());
             std::printf("| %s | %.1f ms/px | %.2f | %.2f (%.1f %% with a lifetime) |\n", b.name, 1000 / speed,
                         fixed.first, scaled.first, 100 * scaled.second);
         }
     for (double speed : { 3333.0, 1000.0 })
     {
-        const std::pair<double, double> whole = barsLifetimeRatio(speed, 0.35, 0, 0.75);
-        const std::pair<double, double> windowed = barsLifetimeRatio(speed, 0.35, 0, 0.75, 8 / speed * 1e6);
+        const std::pair<double, double> whole = barsLifetimeRatio(speed, 0.35, 0, defaultInlierDistance());
+        const std::pair<double, double> windowed = barsLifetimeRatio(speed, 0.35, 0, defaultInlierDistance(), 8 / speed * 1e6);
         std::printf("| half-firing, log contrast 0.35 | %.1f ms/px | timeWindow 100 ms: %.1f (%.1f %%) | 8 px of "
                     "travel: %.2f (%.1f %%) |\n", 1000 / speed, whole.first, 100 * whole.second, windowed.first,
                     100 * windowed.second);
@@ -160,7 +161,7 @@ int main(int argc, char** argv)
         }
         else if (name == "bars")
         {
-            std::printf("\n| bars | speed | lifetime / closed form, inlierDistance=0 | inlierDistance=0.75 |\n"
+            std::printf("\n| bars | speed | lifetime / closed form, inlierDistance=0 | the default inlierDistance |\n"
                         "|---|---|---|---|\n");
             printBars();
         }

@@ -193,14 +193,14 @@ TEST(Event_Lifetime, fast_edges_get_the_closed_form_lifetime)
     // Sharp bars fire one event per pixel and crossing; blurred high-contrast ones one to two more, behind the
     // edge. A fixed 2 ms inlier threshold spans 7 px of a 0.3 ms/px edge: planes through the current event and
     // the stale timestamps of the bar before it collect as many inliers as the true plane. On blurred bars it
-    // takes in the later events of each pixel, which flatten the plane. A threshold of 0.75 px in each
+    // takes in the later events of each pixel, which flatten the plane. A threshold of half a pixel in each
     // hypothesis' own time per pixel does neither; the 2 ms cap keeps slow edges as they were.
     struct Bars { const char* name; double logContrast, blurPx; } bars[] = { { "sharp", 0.5, 0 }, { "blurred", 1.0, 0.7 } };
     const double speeds[] = { 3333, 1667, 1000, 300, 100 };  // 0.3 to 10 ms/px
     for (const Bars& b : bars)
         for (double speed : speeds)
         {
-            const std::pair<double, double> scaled = barsLifetimeRatio(speed, b.logContrast, b.blurPx, 0.75);
+            const std::pair<double, double> scaled = barsLifetimeRatio(speed, b.logContrast, b.blurPx, defaultInlierDistance());
             const std::pair<double, double> fixed = barsLifetimeRatio(speed, b.logContrast, b.blurPx, 0);
             EXPECT_NEAR(1.0, scaled.first, 0.1) << b.name << " " << speed << " px/s";
             EXPECT_GT(scaled.second, 0.95) << b.name << " " << speed << " px/s";
@@ -225,8 +225,8 @@ TEST(Event_Lifetime, half_firing_edges_need_a_time_window_shorter_than_the_cross
     // here) leaves only the current edge: the closed form again, for the events with enough of it to fit.
     for (double speed : { 3333.0, 1000.0 })  // 0.3 and 1 ms/px
     {
-        const std::pair<double, double> whole = barsLifetimeRatio(speed, 0.35, 0, 0.75);
-        const std::pair<double, double> windowed = barsLifetimeRatio(speed, 0.35, 0, 0.75, 8 / speed * 1e6);
+        const std::pair<double, double> whole = barsLifetimeRatio(speed, 0.35, 0, defaultInlierDistance());
+        const std::pair<double, double> windowed = barsLifetimeRatio(speed, 0.35, 0, defaultInlierDistance(), 8 / speed * 1e6);
         EXPECT_GT(whole.first, 5.0) << speed << " px/s";  // the bias: planes through the bar before
         EXPECT_NEAR(1.0, windowed.first, 0.1) << speed << " px/s";
         EXPECT_GT(windowed.second, 0.15) << speed << " px/s";
@@ -276,11 +276,11 @@ TEST(Event_Lifetime, active_events_image_and_parameters_round_trip)
 
     est->setWindowSize(7);
     est->setInlierThreshold(1.5);
-    est->setInlierDistance(0.5);
+    est->setInlierDistance(0.35);
     est->setUsePrediction(false);
     EXPECT_THROW(est->setInlierDistance(-0.1), cv::Exception);
     EXPECT_THROW(est->setInlierDistance(std::numeric_limits<double>::quiet_NaN()), cv::Exception);
-    EXPECT_EQ(0.5, est->getInlierDistance());  // a rejected value leaves the parameter as it was
+    EXPECT_EQ(0.35, est->getInlierDistance());  // a rejected value leaves the parameter as it was
     FileStorage fs("lifetime.yml", FileStorage::WRITE | FileStorage::MEMORY);
     est->write(fs);
     FileStorage in(fs.releaseAndGetString(), FileStorage::READ | FileStorage::MEMORY);
@@ -289,7 +289,7 @@ TEST(Event_Lifetime, active_events_image_and_parameters_round_trip)
     EXPECT_EQ(Size(24, 24), back->getSensorSize());
     EXPECT_EQ(7, back->getWindowSize());
     EXPECT_EQ(1.5, back->getInlierThreshold());
-    EXPECT_EQ(0.5, back->getInlierDistance());
+    EXPECT_EQ(0.35, back->getInlierDistance());
     EXPECT_FALSE(back->getUsePrediction());
 }
 

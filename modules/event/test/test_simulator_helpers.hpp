@@ -68,6 +68,12 @@ inline LeftCameraEvents generateLeftCamera(cv::event::StereoEventSimulator& sim,
     return run;
 }
 
+/** LifetimeEstimator's default inlierDistance, for the tests that compare it with other settings. */
+inline double defaultInlierDistance()
+{
+    return cv::event::LifetimeEstimator::create()->getInlierDistance();
+}
+
 /** Bright vertical bars, 4 px wide and 12 px apart, 1 m away, sliding right at @p speed px/s over a plain wall,
 seen by the realistic scenes' sensor (boxes: threshold spread, 0.5 ms refractory period, latency and jitter,
 noise) on a 64 x 32 crop, through a LifetimeEstimator with @p inlierDistance and @p timeWindowUs. Returns the

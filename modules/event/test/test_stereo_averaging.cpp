@@ -40,12 +40,13 @@ TEST(StereoEventMatcher_Averaging, changes_only_the_output_disparity_and_by_at_m
 
 // boxes_pair's boxes turn a little away from the cameras, so that their disparities fall between whole pixels,
 // and its dotted edges leave one event's match a pixel or so off: there the mean of the neighbours' estimates
-// of both cameras lies within a pixel of the simulator's truth for far more events than each event's own.
+// of both cameras lies within a pixel of the simulator's truth for far more events than each event's own: the
+// averaging brings at least half of the events that miss by more than a pixel to within one.
 TEST(StereoEventMatcher_Averaging, brings_a_pairs_estimates_to_within_a_pixel_of_the_truth)
 {
     const double own = matchingRate(runAveraged("boxes_pair", 1000, 0));
     const double averaged = matchingRate(runAveraged("boxes_pair", 1000, 4));
-    EXPECT_GE(averaged, own + 8);
+    EXPECT_LE(100 - averaged, (100 - own) / 2);
     EXPECT_GE(averaged, 90);
 }
 

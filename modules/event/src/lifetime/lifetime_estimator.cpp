@@ -550,7 +550,7 @@ private:
     int window_ = 5;
     double timeWindow_ = 100000;
     double inlierThreshold_ = 2.0;
-    double inlierDistance_ = 0.75;
+    double inlierDistance_ = 0.5;
     int minInliers_ = 5;
     int maxIterations_ = 19;
     double lambda_ = 1.0;

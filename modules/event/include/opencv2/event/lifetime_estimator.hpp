@@ -96,7 +96,7 @@ public:
     threshold that inlierDistance gives a hypothesis. */
     CV_WRAP virtual double getInlierThreshold() const = 0;
     CV_WRAP virtual void setInlierThreshold(double ms) = 0;
-    /** @brief RANSAC inlier distance in pixels (default 0.75): a past event is an inlier of a hypothesis
+    /** @brief RANSAC inlier distance in pixels (default 0.5): a past event is an inlier of a hypothesis
     when it lies within this distance of the edge position that hypothesis gives it, that is within
     inlierDistance x |g| ms of the plane in time, |g| being the hypothesis' time per pixel, and at most
     inlierThreshold. Fast edges then get a threshold to their scale. 0: the fixed inlierThreshold alone. */

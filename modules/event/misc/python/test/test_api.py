@@ -238,8 +238,8 @@ def test_lifetimes():
     edge = ev.packEvents((1000.0 + 10000.0 * xs.ravel()[order]), xs.ravel()[order], ys.ravel()[order],
                          np.ones(128, np.int32))
     estimator = ev.LifetimeEstimator_create((16, 8))
-    estimator.setInlierDistance(0.5)
-    assert estimator.getInlierDistance() == 0.5
+    estimator.setInlierDistance(0.35)
+    assert estimator.getInlierDistance() == 0.35
     lifetimes, flow, status, quality = estimator.process(edge)
     assert lifetimes.shape == (128, 1) and flow.shape == (128, 2) and quality.shape == (128, 1)
     fitted = lifetimes.ravel() > 0
