@@ -78,7 +78,7 @@ const char* const keys =
     "{no-csv            | false      | do not write events.csv}"
     "{all-frames        | false      | a PNG for every window, not a handful}"
     "{output            | output/event_stereo | output folder}"
-    "{scene             | boxes      | simulated scene when no input is given: boxes, boxes_fast, walking, walking_near, low_contrast (realistic), boxes_pair, boxes_fast_pair, walking_pair (as a real DAVIS240 pair records them), boxes_flicker (a flickering lamp); plane, two_planes, moving_line, faint_line, cluttered}"
+    "{scene             | boxes      | simulated scene when no input is given: boxes, boxes_fast, walking, walking_near, low_contrast (realistic), boxes_pair, boxes_fast_pair, walking_pair (as a real DAVIS240 pair records them), boxes_flicker (a flickering lamp), fan, pendulum, pendulum_patterned (the TUM pairs' scenes, with --sensor=DVS128); plane, two_planes, moving_line, faint_line, cluttered}"
     "{duration-ms       | 1000       | length of the simulated scene [ms]}"
     "{set               |            | matcher parameters NAME=VALUE, comma separated (e.g. uniquenessRatio=20,costWindow=11)}"
     "{filter            |            | a noise filter in front of the matcher: background_activity, trail, refractory, hot_pixels, anti_flicker}"

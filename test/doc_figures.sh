@@ -96,8 +96,8 @@ while IFS= read -r line; do
 done < <("$samples/event_info" --stats --scene=boxes,boxes_fast,walking,walking_near,low_contrast,fan --sensor=DVS128 \
            --duration-ms=1000 | statisticsRows)
 while IFS= read -r line; do
-  expect doc/simulator.md "$line" "event_info --stats --scene=pendulum --sensor=DVS128 --duration-ms=3500"
-done < <("$samples/event_info" --stats --scene=pendulum --sensor=DVS128 --duration-ms=3500 | statisticsRows)
+  expect doc/simulator.md "$line" "event_info --stats --scene=pendulum,pendulum_patterned --sensor=DVS128 --duration-ms=3500"
+done < <("$samples/event_info" --stats --scene=pendulum,pendulum_patterned --sensor=DVS128 --duration-ms=3500 | statisticsRows)
 # How they match: each event's own estimate with the clocks as recorded, the averaging, the clock estimate,
 # then the defaults (the filling) with their density, as simulator.md's and stereo.md's tables give them.
 rate() { decimal "$(row "$1" "ground truth: matching rate" | awk '{ print $1 }')"; }
@@ -297,7 +297,8 @@ done
 # The same check on the realistic scenes simulated on a DVS128 (the table's last rows).
 for entry in "walking:simulated \`walking\` on a DVS128 (\`--scene=walking --sensor=DVS128\`)" \
              "boxes:simulated \`boxes\` on a DVS128" "walking_near:simulated \`walking_near\` on a DVS128" \
-             "fan:simulated \`fan\` on a DVS128" "pendulum:simulated \`pendulum\` on a DVS128"; do
+             "fan:simulated \`fan\` on a DVS128" "pendulum:simulated \`pendulum\` on a DVS128" \
+             "pendulum_patterned:simulated \`pendulum_patterned\` on a DVS128"; do
   IFS=: read -r scene label <<< "$entry"
   expectPlain doc/lifetime.md "| $label | $(arrival --scene=$scene --sensor=DVS128 --set=inlierDistance=0) | $(arrival --scene=$scene --sensor=DVS128) |" \
     "event_lifetime --scene=$scene --sensor=DVS128, inlierDistance=0 and the defaults: the lifetime check"

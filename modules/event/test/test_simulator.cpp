@@ -484,9 +484,11 @@ namespace opencv_test { namespace {
 // The pendulum's ball passes its lowest point, 0.42 m away, every half period (0.875 s), at disparity f B /
 // 0.42; a quarter period after a pass going away it is at its farthest (0.61 m: 16.8 px on a DVS128), three
 // quarters after at its nearest (0.25 m: 40.3 px at its centre). Bounds with a margin for the ball's extent.
-TEST(Event_Simulator, a_pendulums_ball_passes_its_lowest_depth_every_half_period_and_swings_both_ways)
+// The patterned ball swings as the plain one does.
+void checkPendulumSwing(const char* scene)
 {
-    Ptr<StereoEventSimulator> sim = StereoEventSimulator::create("pendulum", SENSOR_DVS128);
+    SCOPED_TRACE(scene);
+    Ptr<StereoEventSimulator> sim = StereoEventSimulator::create(scene, SENSOR_DVS128);
     const SimulatorSettings& s = sim->getSettings();
     std::vector<Event> ev;
     Mat gt;
@@ -517,6 +519,36 @@ TEST(Event_Simulator, a_pendulums_ball_passes_its_lowest_depth_every_half_period
         EXPECT_LT(far, fb / 0.55) << "swing " << swing << ": the far end";
         EXPECT_GT(disparityAt((swing + 0.75) * period, 50000), fb / 0.28) << "swing " << swing << ": the near end";
     }
+}
+
+TEST(Event_Simulator, a_pendulums_ball_passes_its_lowest_depth_every_half_period_and_swings_both_ways)
+{
+    checkPendulumSwing("pendulum");
+    checkPendulumSwing("pendulum_patterned");
+}
+
+// The left camera's signal events of the ball and its string (nearer than the wall's 6.8 px) over one period.
+int pendulumBallEvents(const char* scene)
+{
+    Ptr<StereoEventSimulator> sim = StereoEventSimulator::create(scene, SENSOR_DVS128);
+    std::vector<Event> ev;
+    Mat gt;
+    sim->generate(1750000, ev, gt);
+    int n = 0;
+    for (size_t i = 0; i < ev.size(); i++)
+    {
+        const float* g = gt.ptr<float>((int)i);
+        n += ev[i].camera == CAMERA_LEFT && g[GT_DISPARITY] > 10 && !((int)g[GT_FLAGS] & GT_FLAG_NOISE);
+    }
+    return n;
+}
+
+// The print's block edges inside the ball's outline fire on top of the outline's own events.
+TEST(Event_Simulator, a_patterned_pendulum_ball_fires_inside_its_outline)
+{
+    const int plain = pendulumBallEvents("pendulum");
+    EXPECT_GT(plain, 0);
+    EXPECT_GE(pendulumBallEvents("pendulum_patterned"), 3 * plain / 2);
 }
 
 }}  // namespace

@@ -312,7 +312,7 @@ std::vector<SimulatedPlane> simulatedScene(const String& name, int sensorModel, 
         }
         realSensor(s, sensorModel);
     }
-    else if (name == "pendulum")
+    else if (name == "pendulum" || name == "pendulum_patterned")
     {
         // A dark ball (an octagon 5 cm across) on a string swinging towards and away from the left camera in
         // front of a plain wall 1.5 m away, as in the TUM pendulum recording: 0.24-0.60 m away (disparity 42-17
@@ -332,6 +332,15 @@ std::vector<SimulatedPlane> simulatedScene(const String& name, int sensorModel, 
         for (int side = 0; side < 2; side++)  // two squares, the second turned by 45 degrees: an octagon
         {
             SimulatedPlane half = uniformPlane(ball, Vec2d(0.025, 0.025), 0.2);
+            if (name == "pendulum_patterned")
+            {
+                // A print of 5 mm blocks (1-3 px), half as bright at the darkest, so that the ball fires inside
+                // its outline as the recording's printed ball does.
+                half.texture = TEXTURE_BLOCKS;
+                half.cellSize = 0.005;
+                half.contrast = 0.5;
+                half.textureSeed = 71 + side;
+            }
             const double turn = side * CV_PI / 4;
             Vec3d rotation;
             Rodrigues(Matx33d(1, 0, 0, 0, std::cos(pitch), -std::sin(pitch), 0, std::sin(pitch), std::cos(pitch)) *
@@ -379,7 +388,7 @@ std::vector<String> simulatedSceneNames()
 {
     return std::vector<String>{ "plane", "two_planes", "moving_line", "faint_line", "cluttered",
                                 "boxes", "boxes_fast", "walking", "walking_near", "low_contrast", "fan", "pendulum",
-                                "boxes_flicker", "boxes_pair", "boxes_fast_pair", "walking_pair" };
+                                "pendulum_patterned", "boxes_flicker", "boxes_pair", "boxes_fast_pair", "walking_pair" };
 }
 
 }  // namespace detail

@@ -166,6 +166,8 @@ Named scenes (create()):
 - "pendulum": a dark ball 5 cm across on a string swinging towards and away from the left camera, 0.24-0.60 m
   away, every 1.75 s, over a plain wall, with the same real sensor's departures (the pendulum of the TUM DVS128
   pairs, on a DVS128: disparity 17-42 px);
+- "pendulum_patterned": the same ball printed with blocks of 5 mm, so that it fires inside its outline as the
+  real pendulum's ball does;
 - "boxes_pair", "boxes_fast_pair", "walking_pair": boxes slid to and fro (their faces turned a little, so that
   their disparities fall between whole pixels) and the walking figure 1.8 m away in front of a patterned wall,
   as a real DAVIS240 pair records them: thicker, dotted edges, more OFF than ON events, sensors of different
