@@ -484,6 +484,12 @@ namespace opencv_test { namespace {
 // The pendulum's ball passes its lowest point, 0.42 m away, every half period (0.875 s), at disparity f B /
 // 0.42; a quarter period after a pass going away it is at its farthest (0.61 m: 16.8 px on a DVS128), three
 // quarters after at its nearest (0.25 m: 40.3 px at its centre). Bounds with a margin for the ball's extent.
+// An event of the ball or its string seen by the left camera: signal, nearer than the wall at 1.5 m (6.8 px).
+bool isLeftBallEvent(const Event& e, const float* truth)
+{
+    return e.camera == CAMERA_LEFT && truth[GT_DISPARITY] > 10 && !((int)truth[GT_FLAGS] & GT_FLAG_NOISE);
+}
+
 // The patterned ball swings as the plain one does.
 void checkPendulumSwing(const char* scene)
 {
@@ -494,15 +500,13 @@ void checkPendulumSwing(const char* scene)
     Mat gt;
     sim->generate(3500000, ev, gt);
     const double period = 1750000, fb = s.focalLength * s.baseline;
-    // The median true disparity of the left camera's ball and string events (the wall at 1.5 m is 6.8 px) within
-    // `halfWidth` of `t`.
+    // The median true disparity of the left camera's ball and string events within `halfWidth` of `t`.
     const auto disparityAt = [&](double t, double halfWidth) {
         std::vector<float> d;
         for (size_t i = 0; i < ev.size(); i++)
         {
             const float* g = gt.ptr<float>((int)i);
-            if (ev[i].camera == CAMERA_LEFT && std::abs((double)ev[i].t - t) <= halfWidth && g[GT_DISPARITY] > 10 &&
-                !((int)g[GT_FLAGS] & GT_FLAG_NOISE))
+            if (std::abs((double)ev[i].t - t) <= halfWidth && isLeftBallEvent(ev[i], g))
                 d.push_back(g[GT_DISPARITY]);
         }
         if (d.size() < 10)
@@ -527,7 +531,7 @@ TEST(Event_Simulator, a_pendulums_ball_passes_its_lowest_depth_every_half_period
     checkPendulumSwing("pendulum_patterned");
 }
 
-// The left camera's signal events of the ball and its string (nearer than the wall's 6.8 px) over one period.
+// The left camera's events of the ball and its string over one period.
 int pendulumBallEvents(const char* scene)
 {
     Ptr<StereoEventSimulator> sim = StereoEventSimulator::create(scene, SENSOR_DVS128);
@@ -536,10 +540,7 @@ int pendulumBallEvents(const char* scene)
     sim->generate(1750000, ev, gt);
     int n = 0;
     for (size_t i = 0; i < ev.size(); i++)
-    {
-        const float* g = gt.ptr<float>((int)i);
-        n += ev[i].camera == CAMERA_LEFT && g[GT_DISPARITY] > 10 && !((int)g[GT_FLAGS] & GT_FLAG_NOISE);
-    }
+        n += isLeftBallEvent(ev[i], gt.ptr<float>((int)i));
     return n;
 }
 
