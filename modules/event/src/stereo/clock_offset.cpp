@@ -42,6 +42,7 @@ struct Sample
 {
     int64 group, cell;  // cell: the group's 50 ms in which the event fired
     float d, u, w;
+    float side;         // +1 for the left camera's events, -1 for the right one's
 };
 
 // A plane fit's flow on a dotted edge is noisy, and noise in the regressor flattens the slope: each event takes
@@ -87,10 +88,13 @@ struct SlopeFit
     double meanConfidence = 0;  // of the events with a disparity: how clear-cut the matches were
 };
 
-// Within-surface least squares of d on (u, w, |u|): every surface has its own intercept (its disparity), so only
-// how d changes with them on one surface counts.
+// Within-surface least squares of d on (u, w, |u|) per camera: every surface has its own intercept (its
+// disparity), so only how d changes with them on one surface counts.
 class SurfaceRegression
 {
+    static const int kRegressors = 6;
+    typedef Vec<double, kRegressors + 1> Regressors;
+
 public:
     explicit SurfaceRegression(std::vector<Sample> samples) : samples_(std::move(samples))
     {
@@ -103,7 +107,7 @@ public:
     {
         SlopeFit result;
         std::vector<char> kept(samples_.size(), 1);
-        Vec3d beta;
+        Vec<double, kRegressors> beta;
         for (int pass = 0; pass < 3; pass++)
         {
             if (!solve(kept, beta))
@@ -133,13 +137,13 @@ public:
 private:
     // Fits the kept samples; sets residuals_ and standardError_ (of the u slope, clustered by group, as
     // neighbouring events share their matches).
-    bool solve(const std::vector<char>& kept, Vec3d& beta)
+    bool solve(const std::vector<char>& kept, Vec<double, kRegressors>& beta)
     {
         const size_t n = samples_.size();
-        centred_.assign(n, Vec4d(0, 0, 0, 0));
+        centred_.assign(n, Regressors::all(0));
         std::vector<char> used(n, 0);
-        Matx33d A = Matx33d::zeros();
-        Vec3d b(0, 0, 0);
+        Matx<double, kRegressors, kRegressors> A = Matx<double, kRegressors, kRegressors>::zeros();
+        Vec<double, kRegressors> b = Vec<double, kRegressors>::all(0);
         for (size_t begin = 0; begin < n;)
         {
             // One surface: the kept samples of a group whose disparities follow each other within the gap.
@@ -158,37 +162,42 @@ private:
             }
             if (surface.size() >= kMinSurfaceEvents)
             {
-                Vec4d mean(0, 0, 0, 0);
+                Regressors mean = Regressors::all(0);
                 for (size_t i : surface)
                     mean += regressors(samples_[i]);
                 mean *= 1.0 / (double)surface.size();
                 for (size_t i : surface)
                 {
-                    const Vec4d c = regressors(samples_[i]) - mean;
+                    const Regressors c = regressors(samples_[i]) - mean;
                     centred_[i] = c;
                     used[i] = 1;
-                    for (int j = 0; j < 3; j++)
+                    for (int j = 0; j < kRegressors; j++)
                     {
-                        for (int k = j; k < 3; k++)
+                        for (int k = j; k < kRegressors; k++)
                             A(j, k) += c[j] * c[k];
-                        b[j] += c[j] * c[3];
+                        b[j] += c[j] * c[kRegressors];
                     }
                 }
             }
             begin = end;
         }
-        for (int j = 0; j < 3; j++)
+        for (int j = 0; j < kRegressors; j++)
             for (int k = 0; k < j; k++)
                 A(j, k) = A(k, j);
         // Vertical edges only: w does not vary and takes nothing up (a tiny ridge keeps the system solvable).
         A(1, 1) += 1e-9 + 1e-9 * A(1, 1);
-        // Edges that all move one way make |u| a copy of u: the slope is then not measurable.
-        if (!(A(0, 0) > 0) || !(determinant(A) > 1e-6 * A(0, 0) * A(1, 1) * A(2, 2)))
+        A(4, 4) += 1e-9 + 1e-9 * A(4, 4);
+        // Edges that all move one way make |u| a copy of u, and events of one camera only side u: the slope is
+        // then not measurable.
+        double diagonal = 1;
+        for (int j = 0; j < kRegressors; j++)
+            diagonal *= A(j, j);
+        if (!(A(0, 0) > 0) || !(determinant(A) > 1e-6 * diagonal))
             return false;
-        const Matx33d inv = A.inv(DECOMP_SVD);
+        const Matx<double, kRegressors, kRegressors> inv = A.inv(DECOMP_SVD);
         beta = inv * b;
         residuals_.assign(n, 0.f);
-        std::map<int64, Vec3d> score;  // per group: sum of x e
+        std::map<int64, Vec<double, kRegressors>> score;  // per group: sum of x e
         for (size_t i = 0; i < n; i++)
         {
             if (!used[i])
@@ -196,30 +205,51 @@ private:
                 residuals_[i] = std::numeric_limits<float>::infinity();  // not on a surface: trimmed with the outliers
                 continue;
             }
-            const Vec4d& c = centred_[i];
-            const double e = c[3] - beta[0] * c[0] - beta[1] * c[1] - beta[2] * c[2];
+            const Regressors& c = centred_[i];
+            double e = c[kRegressors];
+            Vec<double, kRegressors> x;
+            for (int j = 0; j < kRegressors; j++)
+            {
+                e -= beta[j] * c[j];
+                x[j] = c[j];
+            }
             residuals_[i] = (float)e;
-            score[samples_[i].group] += Vec3d(c[0] * e, c[1] * e, c[2] * e);
+            score[samples_[i].group] += x * e;
         }
         if (score.size() < 5)
             return false;
-        Matx33d meat = Matx33d::zeros();
+        Matx<double, kRegressors, kRegressors> meat = Matx<double, kRegressors, kRegressors>::zeros();
         for (const auto& kv : score)
             meat += kv.second * kv.second.t();
         const double groups = (double)score.size();
-        const Matx33d V = inv * meat * inv * (groups / (groups - 1));
+        const Matx<double, kRegressors, kRegressors> V = inv * meat * inv * (groups / (groups - 1));
         standardError_ = std::sqrt(std::max(0.0, V(0, 0)));
         return true;
     }
 
-    // (u, w, |u|, d). A clock offset moves an edge by u tau, one way for edges moving right and the other way
-    // for edges moving left; what the matching itself does with faster edges (a walking figure's fast limbs
-    // come out a little nearer than its slow body, their cost windows blending the two) is the same both ways:
-    // |u| takes that up.
-    static Vec4d regressors(const Sample& s) { return Vec4d(s.u, s.w, std::abs(s.u), s.d); }
+    // (u, w, |u|, side u, side w, side |u|, d), side +1 for the left camera's events and -1 for the right one's:
+    // each camera has its own slopes, and the u slope is their mean. A clock offset moves an edge by u tau, one
+    // way for edges moving right and the other way for edges moving left, and the same way for both cameras'
+    // events (either way the right camera sees the edge tau late). What the matching itself does with faster
+    // edges is the same both ways (|u|: a walking figure's fast limbs come out a little nearer than its slow
+    // body), and what it does with the other camera's events after the event (the look-ahead's: the
+    // counterpart is found a little along the motion) is opposite for the two cameras (side u): on a figure that
+    // moves one way it would read as a clock in either camera's events alone.
+    static Regressors regressors(const Sample& s)
+    {
+        Regressors r;
+        r[0] = s.u;
+        r[1] = s.w;
+        r[2] = std::abs(s.u);
+        r[3] = s.side * s.u;
+        r[4] = s.side * s.w;
+        r[5] = s.side * std::abs(s.u);
+        r[kRegressors] = s.d;
+        return r;
+    }
 
     std::vector<Sample> samples_;
-    std::vector<Vec4d> centred_;  // regressors() less the surface's means
+    std::vector<Regressors> centred_;  // regressors() less the surface's means
     std::vector<float> residuals_;
     double standardError_ = 0;
 };
@@ -284,7 +314,8 @@ SlopeFit slopeAt(const std::vector<Event>& left, const std::vector<Event>& right
         const int64 slot = (e.t - t0) / kSlotUs;
         const int64 group = ((slot * 2 + e.camera) * blocksY + e.y / kBlock) * blocksX + e.x / kBlock;
         const int64 cell = group * (kSlotUs / kCellUs) + ((e.t - t0) % kSlotUs) / kCellUs;
-        samples.push_back(Sample{ group, cell, disparity.at<float>(i), (float)u, (float)w });
+        samples.push_back(Sample{ group, cell, disparity.at<float>(i), (float)u, (float)w,
+                                  e.camera == CAMERA_LEFT ? 1.f : -1.f });
     }
     smoothSpeeds(samples);
     SlopeFit fit = SurfaceRegression(std::move(samples)).fit();
@@ -366,7 +397,11 @@ double estimateClockOffset(InputArray events, Size sensorSize, int minDisparity,
         const ptrdiff_t bestIndex = best - fits.data();
         const SlopeFit fit = slope(probe);
         if (fit.ok)
+        {
             fits.push_back(fit);
+            lowest = std::min(lowest, probe);
+            highest = std::max(highest, probe);
+        }
         best = &fits[(size_t)bestIndex];
     }
     // How sure: the slope's standard error through the gain of g over every offset tried (a line through them
@@ -407,9 +442,13 @@ double estimateClockOffset(InputArray events, Size sensorSize, int minDisparity,
         (overallGain < kClearGain && best->meanConfidence < fits[0].meanConfidence - kConfidenceTolerance) ||
         best->meanConfidence < clearest * (1 - kMaxConfidenceLoss))
         return 0;
+    // Near the root the slopes of offsets a few hundred us apart differ by about their standard error (a few
+    // matches flip), so the fit of least |slope| is only as good as one fit; the line through every slope
+    // measured, whose far ends are large against that noise, crosses zero closer to the clock.
+    const double lineRoot = sumO / sumW - (sumG / sumW) / overallGain;
     if (uncertaintyUs)
         *uncertaintyUs = best->standardErrorUs / std::min(overallGain, 1.0);
-    return best->offsetUs;
+    return lowest <= lineRoot && lineRoot <= highest ? lineRoot : best->offsetUs;
 }
 
 }  // namespace event

@@ -117,14 +117,17 @@ disparity comes out u tau too large. An edge's speed along the row is u = |f|^2 
 so an offset shows as disparities that grow with u on one surface. The events are matched (StereoEventMatcher,
 STEREO_COUPLED, defaults, each event's own estimate: no averaging); for each camera, 8 x 8 px block and ten
 seconds, the confident estimates are cut into surfaces where their disparities are more than a pixel apart,
-and the disparity is regressed on u within them. The flows come from each camera's own events
-(LifetimeEstimator, defaults), so that they are the same whatever the restamping; u is taken as the median of
-the block's estimates over 50 ms, as one plane fit's flow is too noisy. A second regressor, f_y / f_x, takes up
-a residual row offset, which moves oblique edges along the row; a third, |u|, what the matching does with
-faster edges whichever way they move, where a clock moves edges that travel left and right in opposite
-directions. The right camera is restamped by the offset that makes the slope zero (secant steps, within
-+-20 ms), and the events are matched again, up to five matchings in all, and once more 2 ms away when the offsets tried
-lie closer together, so that how the slope follows the restamping (the gain) is measured.
+and the disparity is regressed on u within them, each camera's events on their own: a clock moves both
+cameras' matches the same way, while the matching itself (which looks a little ahead in the other camera)
+moves them opposite ways, so the mean of the two slopes is the clock's. The flows come from each camera's
+own events (LifetimeEstimator, defaults), so that they are the same whatever the restamping; u is taken as
+the median of the block's estimates over 50 ms, as one plane fit's flow is too noisy. A second regressor,
+f_y / f_x, takes up a residual row offset, which moves oblique edges along the row; a third, |u|, what the
+matching does with faster edges whichever way they move, where a clock moves edges that travel left and
+right in opposite directions. The right camera is restamped by the offset that makes the slope zero (secant
+steps, within +-20 ms), and the events are matched again, up to five matchings in all, and once more 2 ms
+away when the offsets tried lie closer together, so that how the slope follows the restamping (the gain) is
+measured. The estimate is where the line through every slope measured crosses zero.
 
 An offset can only be told from a disparity where the speed along the rows varies on one surface: objects
 that speed up, slow down or turn, edges of several directions on an object moving with a vertical component,
