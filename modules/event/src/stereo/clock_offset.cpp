@@ -92,8 +92,12 @@ struct SlopeFit
 // disparity), so only how d changes with them on one surface counts.
 class SurfaceRegression
 {
-    static const int kRegressors = 6;
-    typedef Vec<double, kRegressors + 1> Regressors;
+    // The regressors (see row()); a side one is the same regressor times +1 for the left camera's events and -1
+    // for the right one's.
+    enum { U, W, ABS_U, SIDE_U, SIDE_W, SIDE_ABS_U, kRegressors };
+    typedef Vec<double, kRegressors> Coefficients;
+    typedef Matx<double, kRegressors, kRegressors> Square;
+    typedef Vec<double, kRegressors + 1> Row;  // the regressors, then d
 
 public:
     explicit SurfaceRegression(std::vector<Sample> samples) : samples_(std::move(samples))
@@ -107,7 +111,7 @@ public:
     {
         SlopeFit result;
         std::vector<char> kept(samples_.size(), 1);
-        Vec<double, kRegressors> beta;
+        Coefficients beta;
         for (int pass = 0; pass < 3; pass++)
         {
             if (!solve(kept, beta))
@@ -129,7 +133,7 @@ public:
                     kept[i] = 0;
         }
         result.ok = true;
-        result.slopeUs = beta[0] * 1e6;
+        result.slopeUs = beta[U] * 1e6;
         result.standardErrorUs = standardError_ * 1e6;
         return result;
     }
@@ -137,13 +141,13 @@ public:
 private:
     // Fits the kept samples; sets residuals_ and standardError_ (of the u slope, clustered by group, as
     // neighbouring events share their matches).
-    bool solve(const std::vector<char>& kept, Vec<double, kRegressors>& beta)
+    bool solve(const std::vector<char>& kept, Coefficients& beta)
     {
         const size_t n = samples_.size();
-        centred_.assign(n, Regressors::all(0));
+        centred_.assign(n, Row::all(0));
         std::vector<char> used(n, 0);
-        Matx<double, kRegressors, kRegressors> A = Matx<double, kRegressors, kRegressors>::zeros();
-        Vec<double, kRegressors> b = Vec<double, kRegressors>::all(0);
+        Square A = Square::zeros();
+        Coefficients b = Coefficients::all(0);
         for (size_t begin = 0; begin < n;)
         {
             // One surface: the kept samples of a group whose disparities follow each other within the gap.
@@ -162,13 +166,13 @@ private:
             }
             if (surface.size() >= kMinSurfaceEvents)
             {
-                Regressors mean = Regressors::all(0);
+                Row mean = Row::all(0);
                 for (size_t i : surface)
-                    mean += regressors(samples_[i]);
+                    mean += row(samples_[i]);
                 mean *= 1.0 / (double)surface.size();
                 for (size_t i : surface)
                 {
-                    const Regressors c = regressors(samples_[i]) - mean;
+                    const Row c = row(samples_[i]) - mean;
                     centred_[i] = c;
                     used[i] = 1;
                     for (int j = 0; j < kRegressors; j++)
@@ -185,19 +189,19 @@ private:
             for (int k = 0; k < j; k++)
                 A(j, k) = A(k, j);
         // Vertical edges only: w does not vary and takes nothing up (a tiny ridge keeps the system solvable).
-        A(1, 1) += 1e-9 + 1e-9 * A(1, 1);
-        A(4, 4) += 1e-9 + 1e-9 * A(4, 4);
-        // Edges that all move one way make |u| a copy of u, and events of one camera only side u: the slope is
-        // then not measurable.
+        for (int j : { W, SIDE_W })
+            A(j, j) += 1e-9 + 1e-9 * A(j, j);
+        // Edges that all move one way make |u| a copy of u, and one camera's events alone make side u one: the
+        // slope is then not measurable.
         double diagonal = 1;
         for (int j = 0; j < kRegressors; j++)
             diagonal *= A(j, j);
-        if (!(A(0, 0) > 0) || !(determinant(A) > 1e-6 * diagonal))
+        if (!(A(U, U) > 0) || !(determinant(A) > 1e-6 * diagonal))
             return false;
-        const Matx<double, kRegressors, kRegressors> inv = A.inv(DECOMP_SVD);
+        const Square inv = A.inv(DECOMP_SVD);
         beta = inv * b;
         residuals_.assign(n, 0.f);
-        std::map<int64, Vec<double, kRegressors>> score;  // per group: sum of x e
+        std::map<int64, Coefficients> score;  // per group: sum of x e
         for (size_t i = 0; i < n; i++)
         {
             if (!used[i])
@@ -205,25 +209,21 @@ private:
                 residuals_[i] = std::numeric_limits<float>::infinity();  // not on a surface: trimmed with the outliers
                 continue;
             }
-            const Regressors& c = centred_[i];
-            double e = c[kRegressors];
-            Vec<double, kRegressors> x;
+            const Coefficients x(centred_[i].val);  // the regressors of the row
+            double e = centred_[i][kRegressors];
             for (int j = 0; j < kRegressors; j++)
-            {
-                e -= beta[j] * c[j];
-                x[j] = c[j];
-            }
+                e -= beta[j] * x[j];
             residuals_[i] = (float)e;
             score[samples_[i].group] += x * e;
         }
         if (score.size() < 5)
             return false;
-        Matx<double, kRegressors, kRegressors> meat = Matx<double, kRegressors, kRegressors>::zeros();
+        Square meat = Square::zeros();
         for (const auto& kv : score)
             meat += kv.second * kv.second.t();
         const double groups = (double)score.size();
-        const Matx<double, kRegressors, kRegressors> V = inv * meat * inv * (groups / (groups - 1));
-        standardError_ = std::sqrt(std::max(0.0, V(0, 0)));
+        const Square V = inv * meat * inv * (groups / (groups - 1));
+        standardError_ = std::sqrt(std::max(0.0, V(U, U)));
         return true;
     }
 
@@ -235,21 +235,21 @@ private:
     // body), and what it does with the other camera's events after the event (the look-ahead's: the
     // counterpart is found a little along the motion) is opposite for the two cameras (side u): on a figure that
     // moves one way it would read as a clock in either camera's events alone.
-    static Regressors regressors(const Sample& s)
+    static Row row(const Sample& s)
     {
-        Regressors r;
-        r[0] = s.u;
-        r[1] = s.w;
-        r[2] = std::abs(s.u);
-        r[3] = s.side * s.u;
-        r[4] = s.side * s.w;
-        r[5] = s.side * std::abs(s.u);
+        Row r;
+        r[U] = s.u;
+        r[W] = s.w;
+        r[ABS_U] = std::abs(s.u);
+        r[SIDE_U] = s.side * s.u;
+        r[SIDE_W] = s.side * s.w;
+        r[SIDE_ABS_U] = s.side * std::abs(s.u);
         r[kRegressors] = s.d;
         return r;
     }
 
     std::vector<Sample> samples_;
-    std::vector<Regressors> centred_;  // regressors() less the surface's means
+    std::vector<Row> centred_;  // row() less the surface's means
     std::vector<float> residuals_;
     double standardError_ = 0;
 };
