@@ -7,7 +7,7 @@
 // to what the scene already has) and its first seconds go through the estimate, as event_stereo's
 // --right-time-offset-ms=auto does. A clock moved by c should move the estimate by -c; where the events cannot
 // tell an offset from a disparity, the estimate should say so (an uncertainty above 0.5 ms: event_stereo then
-// does not apply it).
+// does not apply it, nor an estimate within two uncertainties of zero).
 
 #include "clock_offset_policy.hpp"
 #include "command_line.hpp"
@@ -33,7 +33,7 @@ std::string cell(double estimateUs, double uncertaintyUs)
     if (!std::isfinite(uncertaintyUs))
         return "none";
     std::snprintf(text, sizeof(text), "%+.2f +- %.2f%s", estimateUs / 1000, uncertaintyUs / 1000,
-                  uncertaintyUs <= kSampleMaxClockUncertaintyUs ? "" : " (not applied)");
+                  sampleAppliesClockOffset(estimateUs, uncertaintyUs) ? "" : " (not applied)");
     return text;
 }
 

@@ -34,8 +34,9 @@ inline std::string sampleCameraSwapAdvice(bool twoFiles, bool textFile, int left
 // --right-time-offset-ms=auto: the right camera's clock against the left one's (estimateClockOffset()) from the
 // first three seconds of events (longer while there are fewer than 20,000, up to 20 s; at most 300,000, as the
 // events are matched several times), read by a capture of its own before the run. Applied when its
-// uncertainty is below kSampleMaxClockUncertaintyUs; otherwise the events cannot tell an offset from a
-// disparity (one object at one speed) and the clocks are left as they are.
+// uncertainty is below kSampleMaxClockUncertaintyUs and it lies kSampleClockSignificance of them clear of zero;
+// otherwise the events cannot tell an offset from a disparity (one object at one speed), or do not show the
+// clocks apart, and the clocks are left as they are.
 struct ClockCheck
 {
     std::string result = "not estimated";
@@ -92,11 +93,13 @@ inline ClockCheck checkClocks(StereoSourceOptions o, bool estimate, const std::s
     double uncertainty = 0;
     const double offset = cv::event::estimateClockOffset(events, size, minDisparity, maxDisparity, &uncertainty);
     check.result = cv::format("%+.2f ms +- %.2f ms (estimateClockOffset, first %.1f s)", offset * 1e-3, uncertainty * 1e-3, seconds);
-    if (uncertainty <= kSampleMaxClockUncertaintyUs)
+    if (sampleAppliesClockOffset(offset, uncertainty))
     {
         check.appliedMs = std::round(offset / 10) * 0.01;  // to 10 us: the summary shows what was applied
         check.result += ": applied";
     }
+    else if (uncertainty <= kSampleMaxClockUncertaintyUs)
+        check.result += cv::format(": not applied, within %g of its uncertainties of none: the events do not show the clocks apart", kSampleClockSignificance);
     else
         check.result += cv::format(": not applied, the events do not pin it down (uncertainty above %.1f ms: one object at one speed along the rows, or surfaces whose speeds follow their depth)", kSampleMaxClockUncertaintyUs * 1e-3);
     return check;

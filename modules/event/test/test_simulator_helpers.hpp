@@ -80,7 +80,8 @@ noise) on a 64 x 32 crop, through a LifetimeEstimator with @p inlierDistance and
 median ratio of the estimated lifetimes to the closed form 1 / speed over the left signal events after the first
 20 px of travel, and the share of them with a lifetime. The unit tests and the design_figures benchmark share it. */
 inline std::pair<double, double> barsLifetimeRatio(double speed, double logContrast, double blurPx,
-                                                   double inlierDistance, double timeWindowUs = 100000)
+                                                   double inlierDistance, double timeWindowUs = 100000,
+                                                   double crossingLifetimes = -1)
 {
     using namespace cv::event;
     SimulatorSettings s = StereoEventSimulator::create("boxes")->getSettings();
@@ -106,6 +107,8 @@ inline std::pair<double, double> barsLifetimeRatio(double speed, double logContr
     cv::Ptr<LifetimeEstimator> est = LifetimeEstimator::create(s.resolution);
     est->setInlierDistance(inlierDistance);
     est->setTimeWindow(timeWindowUs);
+    if (crossingLifetimes >= 0)
+        est->setCrossingLifetimes(crossingLifetimes);
     const LeftCameraEvents run = generateLeftCamera(*sim, travel / speed * 1e6);
     const std::vector<Event>& left = run.events;
     cv::Mat lifetimes;

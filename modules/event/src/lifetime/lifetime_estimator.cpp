@@ -29,6 +29,13 @@ struct Prediction
     bool valid = false;
 };
 
+// The plane of a pixel's crossing in progress: the first of its events' planes.
+struct CrossingPlane
+{
+    float a = 0, b = 0, quality = 0;
+    bool valid = false;
+};
+
 class LifetimeEstimatorImpl CV_FINAL : public RowBandLifetimeEstimator
 {
 public:
@@ -102,8 +109,13 @@ public:
         const int p = e.p ? 1 : 0;
         const size_t idx = index(e.x, e.y, p);
         predictions_[idx].valid = false;
-        surface_[idx] = e.t;
-        predictFromFlow(e, p, lifetime, flow);
+        const bool continues = continuesCrossing(e, p, idx);
+        if (!continues)
+        {
+            surface_[idx] = e.t;
+            crossings_[idx] = CrossingPlane();
+        }
+        predictFromFlow(e, surface_[idx], p, lifetime, flow);
         scratch.counts[LIFETIME_MATCHED]++;
         Active& act = active_[(size_t)e.y * size_.width + e.x];
         act.t = e.t;
@@ -128,6 +140,7 @@ public:
         const size_t n = (size_t)size_.area();
         surface_.assign(2 * n, EventSurface::NO_EVENT);
         predictions_.assign(2 * n, Prediction());
+        crossings_.assign(2 * n, CrossingPlane());
         active_.assign(n, Active());
         for (double& c : own_.counts)
             c = 0;
@@ -203,6 +216,13 @@ public:
     void setPredictionTolerance(double us) CV_OVERRIDE { predictionTolerance_ = positive(us, "prediction tolerance"); }
     bool getUsePrediction() const CV_OVERRIDE { return usePrediction_; }
     void setUsePrediction(bool u) CV_OVERRIDE { usePrediction_ = u; }
+    double getCrossingLifetimes() const CV_OVERRIDE { return crossingLifetimes_; }
+    void setCrossingLifetimes(double lifetimes) CV_OVERRIDE
+    {
+        if (!(lifetimes >= 0) || !std::isfinite(lifetimes))
+            CV_Error_(Error::StsBadArg, ("LifetimeEstimator: crossingLifetimes %g; must be >= 0 (0: off)", lifetimes));
+        crossingLifetimes_ = lifetimes;
+    }
     int getSeed() const CV_OVERRIDE { return seed_; }
     void setSeed(int s) CV_OVERRIDE { seed_ = s; }
 
@@ -213,7 +233,8 @@ public:
            << "timeWindow" << timeWindow_ << "inlierThreshold" << inlierThreshold_ << "inlierDistance" << inlierDistance_
            << "minInliers" << minInliers_
            << "maxIterations" << maxIterations_ << "regularization" << lambda_
-           << "predictionTolerance" << predictionTolerance_ << "usePrediction" << (int)usePrediction_ << "seed" << seed_;
+           << "predictionTolerance" << predictionTolerance_ << "usePrediction" << (int)usePrediction_
+           << "crossingLifetimes" << crossingLifetimes_ << "seed" << seed_;
     }
 
     void read(const FileNode& fn) CV_OVERRIDE
@@ -229,6 +250,7 @@ public:
         setRegularization(num("regularization", lambda_));
         setPredictionTolerance(num("predictionTolerance", predictionTolerance_));
         setUsePrediction(num("usePrediction", usePrediction_) != 0);
+        setCrossingLifetimes(num("crossingLifetimes", crossingLifetimes_));
         setSeed((int)num("seed", seed_));
         if (s != size_)
             setSensorSize(s);
@@ -262,7 +284,11 @@ private:
         double a = 0, b = 0;
         float quality = 0;
         status = LIFETIME_NOISE;
+        // A later event of a crossing in progress is fitted at the crossing's first time, where the edge arrived.
+        const bool continues = continuesCrossing(e, p, idx);
+        const int64 origin = continues ? surface_[idx] : e.t;
         Prediction& pred = predictions_[idx];
+        CrossingPlane& crossing = crossings_[idx];
         if (usePrediction_ && pred.valid && std::abs(timeDifference(e.t, pred.t)) <= predictionTolerance_)
         {
             a = pred.a;
@@ -270,15 +296,32 @@ private:
             quality = pred.quality;
             status = LIFETIME_PREDICTED;
         }
-        else if (fit(e, p, pred, scratch, a, b, quality))
+        else if (fit(e, origin, p, pred, scratch, a, b, quality))
             status = LIFETIME_FITTED;
+        else if (continues && crossing.valid)
+        {
+            a = crossing.a;
+            b = crossing.b;
+            quality = crossing.quality;
+            status = LIFETIME_PREDICTED;
+        }
         pred.valid = false;  // consumed (or stale)
-        surface_[idx] = e.t;
+        if (!continues)
+            surface_[idx] = e.t;
 
         float lifetime = 0;
         flow = Vec2f(0, 0);
         const double g2 = a * a + b * b;
         const bool plane = status != LIFETIME_NOISE && g2 > 1e-12;
+        if (!continues)
+            crossing = CrossingPlane();
+        if (plane && !crossing.valid)
+        {
+            crossing.a = (float)a;
+            crossing.b = (float)b;
+            crossing.quality = quality;
+            crossing.valid = true;
+        }
         std::pair<float, Vec2f> matched;
         if (source && plane == matchedNeedsPlane && source->get(matched))
         {
@@ -286,13 +329,13 @@ private:
             flow = matched.second;
             status = LIFETIME_MATCHED;
             quality = 0;
-            predictFromFlow(e, p, lifetime, flow);
+            predictFromFlow(e, origin, p, lifetime, flow);
         }
         else if (plane)
         {
             lifetime = (float)(1000.0 * std::sqrt(g2));  // |g| ms -> us
             flow = Vec2f((float)(1000.0 * a / g2), (float)(1000.0 * b / g2));  // g / |g|^2 px/ms -> px/s
-            predictNeighbour(e, p, a, b, quality);
+            predictNeighbour(e, origin, p, a, b, quality);
         }
         else
         {
@@ -314,6 +357,18 @@ private:
         float lifetime = 0;
         uchar p = 0;
     };
+
+    // Whether @p e continues the crossing of its pixel whose first time the surface holds: a blurred or strong
+    // edge fires a pixel several times as it passes, and the edge arrived with the first of them. It does when
+    // the pixel's last event had its polarity and a lifetime, and the crossing began less than
+    // crossingLifetimes of that lifetime before.
+    bool continuesCrossing(const Event& e, int p, size_t idx) const
+    {
+        const int64 first = surface_[idx];
+        const Active& last = active_[(size_t)e.y * size_.width + e.x];
+        return crossingLifetimes_ > 0 && first != EventSurface::NO_EVENT && last.p == (uchar)p && last.lifetime > 0 &&
+               timeDifference(e.t, first) < crossingLifetimes_ * last.lifetime;
+    }
 
     static double positive(double v, const char* what)
     {
@@ -354,9 +409,10 @@ private:
                                    : inlierThreshold_;
     }
 
-    // RANSAC + refit. On success, (a, b) is the time-surface gradient [ms/px].
-    bool fit(const Event& e, int p, const Prediction& pred, LifetimeScratch& scratch, double& a, double& b,
-             float& quality)
+    // RANSAC + refit, in time relative to @p origin (the event's own time, or its crossing's first), over the
+    // past events up to the event's own time. On success, (a, b) is the time-surface gradient [ms/px].
+    bool fit(const Event& e, int64 origin, int p, const Prediction& pred, LifetimeScratch& scratch, double& a,
+             double& b, float& quality)
     {
         const int r = window_ / 2;
         const size_t capacity = (size_t)window_ * window_;
@@ -370,7 +426,7 @@ private:
         double* const py = scratch.y.data();
         double* const pt = scratch.t.data();
         int m = 0;
-        const int64 oldest = timeBefore(e.t, (int64)timeWindow_);
+        const int64 oldest = timeBefore(origin, (int64)timeWindow_);
         for (int dy = -r; dy <= r; dy++)
         {
             const int y = e.y + dy;
@@ -387,7 +443,7 @@ private:
                     continue;
                 px[m] = (double)dx;
                 py[m] = (double)dy;
-                pt[m] = (double)(ts - e.t) * 1e-3;
+                pt[m] = (double)(ts - origin) * 1e-3;
                 m++;
             }
         }
@@ -513,19 +569,20 @@ private:
     }
 
     // The neighbour's prediction from a lifetime and flow obtained elsewhere (a stereo match).
-    void predictFromFlow(const Event& e, int p, float lifetime, const Vec2f& flow)
+    void predictFromFlow(const Event& e, int64 arrival, int p, float lifetime, const Vec2f& flow)
     {
         const double v2 = (double)flow[0] * flow[0] + (double)flow[1] * flow[1];
         if (lifetime > 0 && v2 > 0)
         {
             // Gradient g = v / |v|^2, with v in px/ms: the plane that produced this flow.
             const double vx = flow[0] * 1e-3, vy = flow[1] * 1e-3, v2ms = v2 * 1e-6;
-            predictNeighbour(e, p, vx / v2ms, vy / v2ms, 0.f);
+            predictNeighbour(e, arrival, p, vx / v2ms, vy / v2ms, 0.f);
         }
     }
 
-    // Stores the plane at the 8-neighbour the edge moves to, with the time it should get there.
-    void predictNeighbour(const Event& e, int p, double a, double b, float quality)
+    // Stores the plane at the 8-neighbour the edge moves to, with the time it should get there from its
+    // @p arrival at the event's pixel (the crossing's first time).
+    void predictNeighbour(const Event& e, int64 arrival, int p, double a, double b, float quality)
     {
         Point next;  // the edge moves along the gradient
         if (!neighbourAlongMotion(a, b, next))
@@ -541,7 +598,7 @@ private:
         q.a = (float)a;
         q.b = (float)b;
         const int64 step = (int64)std::llround(stepUs);
-        q.t = step >= 0 ? timeAfter(e.t, step) : timeBefore(e.t, -step);
+        q.t = step >= 0 ? timeAfter(arrival, step) : timeBefore(arrival, -step);
         q.quality = quality;
         q.valid = true;
     }
@@ -556,10 +613,12 @@ private:
     double lambda_ = 1.0;
     double predictionTolerance_ = 1000;
     bool usePrediction_ = true;
+    double crossingLifetimes_ = 2.0;
     int seed_ = 0;
     const PlaneInlierKernels& inlierKernels_ = planeInlierKernelsForThisCpu();
     std::vector<int64> surface_;
     std::vector<Prediction> predictions_;
+    std::vector<CrossingPlane> crossings_;
     std::vector<Active> active_;
     LifetimeScratch own_;  // the working memory of the public calls; its counts are the estimator's
 };

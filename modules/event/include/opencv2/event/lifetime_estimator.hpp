@@ -18,7 +18,8 @@ enum LifetimeStatus
 {
     LIFETIME_NOISE = 0,      //!< no local plane: the event is classified as noise, lifetime 0
     LIFETIME_FITTED = 1,     //!< RANSAC plane fit + regularised least-squares refit
-    LIFETIME_PREDICTED = 2,  //!< arrived when the previous plane predicted: its plane was reused (no fit)
+    LIFETIME_PREDICTED = 2,  //!< a plane reused without a fit: the one predicted for the pixel (the event arrived when
+                             //!< it said), or its crossing's when the event continues a crossing and fits none
     LIFETIME_MATCHED = 3     //!< given by a stereo match (StereoEventMatcher, coupled mode)
 };
 
@@ -26,7 +27,9 @@ enum LifetimeStatus
 (Mueggler et al. @cite Mueggler2015, with the prediction shortcut of Hadviger et al. @cite Hadviger2019).
 
 For each event, the past events of its polarity in an N x N window no older than dt are taken in local
-coordinates (x, y relative to the event, t relative to the event in ms). RANSAC hypotheses are planes
+coordinates (x, y relative to the event, t relative to the event in ms). The surface holds, per pixel, when
+an edge arrived: a blurred or strong edge fires a pixel several times as it passes, and the later events of
+such a crossing (see getCrossingLifetimes()) keep the first one's time there and are fitted at it. RANSAC hypotheses are planes
 t = a x + b y through the current event and two random past events (degenerate pairs are skipped); inliers
 lie within the inlier distance of the edge position the plane gives them (in pixels, so in time the
 threshold is that distance times the plane's time per pixel), and within the inlier threshold [ms]; the best hypothesis is accepted with at least
@@ -41,7 +44,7 @@ that plane without any fit (the shortcut), unless prediction is disabled.
 
 Fitting in local coordinates makes the thresholds independent of how long the recording has run (the public
 MATLAB reference fits in absolute microseconds; its threshold drifts with time).
-Memory: per pixel and polarity, the last timestamp and a predicted plane: O(sensor pixels).
+Memory: per pixel and polarity, the crossing's first timestamp, its plane and a predicted plane: O(sensor pixels).
 */
 class CV_EXPORTS_W LifetimeEstimator : public Algorithm
 {
@@ -117,6 +120,14 @@ public:
     /** @brief Enables the prediction shortcut (default true). */
     CV_WRAP virtual bool getUsePrediction() const = 0;
     CV_WRAP virtual void setUsePrediction(bool use) = 0;
+    /** @brief How long an edge's crossing of a pixel lasts, in lifetimes of the pixel's last event (default 2).
+    An event of the polarity of its pixel's last event, which had a lifetime, continues that pixel's crossing
+    while the crossing began less than this many of that lifetime before: the surface keeps the crossing's first
+    time (when the edge arrived), the event's plane is fitted with its origin there (over the past events up
+    to the event itself), and an event that fits no plane takes the crossing's (LIFETIME_PREDICTED). 0: every
+    event starts a crossing and the surface holds each pixel's last time, as in Mueggler et al. */
+    CV_WRAP virtual double getCrossingLifetimes() const = 0;
+    CV_WRAP virtual void setCrossingLifetimes(double lifetimes) = 0;
     /** @brief Seed of the RANSAC sampling (default 0): results are deterministic. An event's samples are drawn
     from the seed and the event itself (pixel, polarity, time), not from a sequence shared by all events, so
     they do not depend on how many fits ran before it. */
