@@ -231,8 +231,9 @@ def test_noise_filters():
 def test_lifetimes():
     # LifetimeEstimator and LifetimeArrivalCheck: an edge sliding right at 100 px/s (10 ms per pixel) over a
     # 16 x 8 sensor, pixel (x, y) firing at 1 ms + 10 ms x. Its lifetimes are 10 ms, and the check finds the
-    # edge reaching the next pixel after one of them; inlierDistance goes through the bindings. Every event lies
-    # on the plane, so each lifetime's quality is 1 / (1 + 1 / (n - 2)) for a whole number n of inliers.
+    # edge reaching the next pixel after one of them; inlierDistance and crossingLifetimes (each pixel fires once:
+    # no crossing to continue) go through the bindings. Every event lies on the plane, so each lifetime's quality
+    # is 1 / (1 + 1 / (n - 2)) for a whole number n of inliers.
     xs, ys = np.meshgrid(np.arange(16, dtype=np.int32), np.arange(8, dtype=np.int32))
     order = np.argsort(xs.ravel(), kind="stable")
     edge = ev.packEvents((1000.0 + 10000.0 * xs.ravel()[order]), xs.ravel()[order], ys.ravel()[order],
@@ -240,6 +241,9 @@ def test_lifetimes():
     estimator = ev.LifetimeEstimator_create((16, 8))
     estimator.setInlierDistance(0.35)
     assert estimator.getInlierDistance() == 0.35
+    assert estimator.getCrossingLifetimes() == 2.0
+    estimator.setCrossingLifetimes(3.5)
+    assert estimator.getCrossingLifetimes() == 3.5
     lifetimes, flow, status, quality = estimator.process(edge)
     assert lifetimes.shape == (128, 1) and flow.shape == (128, 2) and quality.shape == (128, 1)
     fitted = lifetimes.ravel() > 0
