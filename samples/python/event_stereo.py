@@ -98,13 +98,14 @@ def check_clocks(a, calibration):
         events = calibration.rectifyEvents(events)
     offset, uncertainty = ev.estimateClockOffset(events, size, a.min_disparity, a.max_disparity)
     text = "%+.2f ms +- %.2f ms (estimateClockOffset, first %.1f s)" % (offset * 1e-3, uncertainty * 1e-3, seconds)
-    if uncertainty <= MAX_CLOCK_UNCERTAINTY_US and abs(offset) >= CLOCK_SIGNIFICANCE * uncertainty:
-        return math.copysign(math.floor(abs(offset) / 10 + 0.5), offset) * 0.01, text + ": applied"  # as std::round
-    if uncertainty <= MAX_CLOCK_UNCERTAINTY_US:
+    if uncertainty > MAX_CLOCK_UNCERTAINTY_US:
+        return 0.0, text + (": not applied, the events do not pin it down (uncertainty above %.1f ms: one object at "
+                            "one speed along the rows, or surfaces whose speeds follow their depth)"
+                            % (MAX_CLOCK_UNCERTAINTY_US * 1e-3))
+    if abs(offset) < CLOCK_SIGNIFICANCE * uncertainty:
         return 0.0, text + (": not applied, within %g of its uncertainties of none: the events do not show the clocks "
                             "apart" % CLOCK_SIGNIFICANCE)
-    return 0.0, text + (": not applied, the events do not pin it down (uncertainty above %.1f ms: one object at one "
-                        "speed along the rows, or surfaces whose speeds follow their depth)" % (MAX_CLOCK_UNCERTAINTY_US * 1e-3))
+    return math.copysign(math.floor(abs(offset) / 10 + 0.5), offset) * 0.01, text + ": applied"  # as std::round
 
 
 class Tally:

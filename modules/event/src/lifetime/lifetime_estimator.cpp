@@ -109,8 +109,7 @@ public:
         const int p = e.p ? 1 : 0;
         const size_t idx = index(e.x, e.y, p);
         predictions_[idx].valid = false;
-        const bool continues = continuesCrossing(e, p, idx);
-        if (!continues)
+        if (!continuesCrossing(e, p, idx))
         {
             surface_[idx] = e.t;
             crossings_[idx] = CrossingPlane();
@@ -307,14 +306,15 @@ private:
         }
         pred.valid = false;  // consumed (or stale)
         if (!continues)
+        {
             surface_[idx] = e.t;
+            crossing = CrossingPlane();
+        }
 
         float lifetime = 0;
         flow = Vec2f(0, 0);
         const double g2 = a * a + b * b;
         const bool plane = status != LIFETIME_NOISE && g2 > 1e-12;
-        if (!continues)
-            crossing = CrossingPlane();
         if (plane && !crossing.valid)
         {
             crossing.a = (float)a;

@@ -29,8 +29,8 @@ enum LifetimeStatus
 For each event, the past events of its polarity in an N x N window no older than dt are taken in local
 coordinates (x, y relative to the event, t relative to the event in ms). The surface holds, per pixel, when
 an edge arrived: a blurred or strong edge fires a pixel several times as it passes, and the later events of
-such a crossing (see getCrossingLifetimes()) keep the first one's time there and are fitted at it. RANSAC hypotheses are planes
-t = a x + b y through the current event and two random past events (degenerate pairs are skipped); inliers
+such a crossing (see getCrossingLifetimes()) keep the first one's time there and are fitted at it. RANSAC
+hypotheses are planes t = a x + b y through the current event and two random past events (degenerate pairs are skipped); inliers
 lie within the inlier distance of the edge position the plane gives them (in pixels, so in time the
 threshold is that distance times the plane's time per pixel), and within the inlier threshold [ms]; the best hypothesis is accepted with at least
 minInliers inliers, and refitted by least squares on its inliers (t = a x + b y + c), regularised toward
