@@ -1,6 +1,6 @@
 // event_evaluate: runs a stereo method on a recording with per-event ground truth and writes a report.
 //
-//   event_evaluate [--scene=NAME --duration-ms=MS | --input=REC [--gt=REC.gt.csv]] [--method=coupled]
+//   event_evaluate [--scene=NAME [--sensor=DVS128] --duration-ms=MS | --input=REC [--gt=REC.gt.csv]] [--method=coupled]
 //                  [--window-ms=33] [--output=DIR] [--set=PARAM=VALUE[,PARAM=VALUE...]] [--min-quality=Q]
 //   methods: coupled (the default), decoupled, fixed (StereoEventMatcher modes), sgbm, lifetime, none
 //
@@ -50,6 +50,7 @@ struct Options
 {
     // Defaults: the keys below.
     std::string scene, input, gt, method, output;
+    int sceneModel = SENSOR_DAVIS240;  // --sensor
     std::string settings;  // matcher parameters, --set as given
     std::string sensorSettings;  // --sensor-set, as given
     std::string filter, filterSettings;  // --filter, --filter-set
@@ -61,6 +62,7 @@ const char* const keys =
     "{help h      | false      | print this message}"
     "{scene       | two_planes | simulated scene, when no --input is given}"
     "{duration-ms | 500        | length of the simulated scene [ms]}"
+    "{sensor      | DAVIS240   | the sensor model --scene is simulated on: DVS128, DAVIS240 or DAVIS346}"
     "{input       |            | a recording with per-event ground truth beside it}"
     "{gt          |            | the ground truth file; default: the recording's name + .gt.csv}"
     "{method      | coupled    | coupled, decoupled, fixed (StereoEventMatcher modes), sgbm (frames + StereoSGBM, FrameStereoMatcher), lifetime, or none (evaluates --filter alone)}"
@@ -116,6 +118,7 @@ int main(int argc, char** argv)
             return 0;
         o.scene = cmd.get<std::string>("scene");
         o.durationMs = cmd.get<double>("duration-ms");
+        o.sceneModel = sceneSensorModel(cmd.get<std::string>("sensor"));
         o.input = cmd.get<std::string>("input");
         o.gt = cmd.get<std::string>("gt");
         o.method = cmd.get<std::string>("method");
@@ -141,7 +144,7 @@ int main(int argc, char** argv)
         Size size;
         if (o.input.empty())
         {
-            sim = StereoEventSimulator::create(o.scene);
+            sim = StereoEventSimulator::create(o.scene, o.sceneModel);
             if (!o.sensorSettings.empty())
             {
                 SimulatorSettings settings = sim->getSettings();
@@ -233,7 +236,9 @@ int main(int argc, char** argv)
 
         EvaluationReport report;
         report.method = o.method;
-        report.source = sim ? "simulated scene " + o.scene : o.input;
+        report.source = !sim ? o.input
+                      : o.sceneModel == SENSOR_DAVIS240 ? "simulated scene " + o.scene
+                      : "simulated scene " + o.scene + " on a " + getSensorModelName(o.sceneModel);
         report.output = o.output;
         report.filter = filter ? o.filter : std::string();
         report.windowMs = o.windowMs;

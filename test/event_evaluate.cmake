@@ -1,7 +1,7 @@
 # ctest `event_evaluate_consistency`: the evaluation tool gives the same metrics on a simulated scene whether
 # the ground truth comes from the simulator in memory or from a written recording and its .gt.csv side file
 # (which proves the side file lines up with the events), and writes its report and pictures.
-foreach(v EVALUATE OVERVIEW WORK_DIR)
+foreach(v EVALUATE OVERVIEW LIFETIME WORK_DIR)
   if(NOT DEFINED ${v})
     message(FATAL_ERROR "event_evaluate.cmake: ${v} not set")
   endif()
@@ -46,4 +46,18 @@ if(named EQUAL -1)
 endif()
 if(NOT EXISTS "${WORK_DIR}/file_filter/filter_before_after.png")
   message(FATAL_ERROR "filter_before_after.png was not written")
+endif()
+
+# A scene simulated on another sensor model (--sensor): event_lifetime writes 1 s of the fan on a DVS128 with
+# its ground truth; evaluated from that file and simulated in memory, the lifetimes' metrics agree.
+run_step("${LIFETIME}" --scene=fan --sensor=DVS128 --every-ms=1000 "--output=${WORK_DIR}/dvs128_recording")
+run_step("${EVALUATE}" --scene=fan --sensor=DVS128 --duration-ms=1000 --method=lifetime "--output=${WORK_DIR}/dvs128_memory")
+run_step("${EVALUATE}" "--input=${WORK_DIR}/dvs128_recording/fan.aedat4" --method=lifetime "--output=${WORK_DIR}/dvs128_file")
+expect_same_metrics(dvs128_memory dvs128_file " on a DVS128")
+# Without --sensor the scene is simulated on a DAVIS240: other events, other metrics.
+run_step("${EVALUATE}" --scene=fan --duration-ms=1000 --method=lifetime "--output=${WORK_DIR}/davis240_memory")
+file(STRINGS "${WORK_DIR}/davis240_memory/metrics.csv" davis240 REGEX "^events,")
+file(STRINGS "${WORK_DIR}/dvs128_memory/metrics.csv" dvs128 REGEX "^events,")
+if(davis240 STREQUAL dvs128)
+  message(FATAL_ERROR "--sensor=DVS128 simulated the same events as the DAVIS240 default: ${dvs128}")
 endif()
