@@ -222,6 +222,8 @@ public:
             CV_Error_(Error::StsBadArg, ("LifetimeEstimator: crossingLifetimes %g; must be >= 0 (0: off)", lifetimes));
         crossingLifetimes_ = lifetimes;
     }
+    bool getSkipEarlierEdges() const CV_OVERRIDE { return skipEarlierEdges_; }
+    void setSkipEarlierEdges(bool skip) CV_OVERRIDE { skipEarlierEdges_ = skip; }
     int getSeed() const CV_OVERRIDE { return seed_; }
     void setSeed(int s) CV_OVERRIDE { seed_ = s; }
 
@@ -233,7 +235,8 @@ public:
            << "minInliers" << minInliers_
            << "maxIterations" << maxIterations_ << "regularization" << lambda_
            << "predictionTolerance" << predictionTolerance_ << "usePrediction" << (int)usePrediction_
-           << "crossingLifetimes" << crossingLifetimes_ << "seed" << seed_;
+           << "crossingLifetimes" << crossingLifetimes_ << "skipEarlierEdges" << (int)skipEarlierEdges_
+           << "seed" << seed_;
     }
 
     void read(const FileNode& fn) CV_OVERRIDE
@@ -250,6 +253,7 @@ public:
         setPredictionTolerance(num("predictionTolerance", predictionTolerance_));
         setUsePrediction(num("usePrediction", usePrediction_) != 0);
         setCrossingLifetimes(num("crossingLifetimes", crossingLifetimes_));
+        setSkipEarlierEdges(num("skipEarlierEdges", skipEarlierEdges_) != 0);
         setSeed((int)num("seed", seed_));
         if (s != size_)
             setSensorSize(s);
@@ -409,6 +413,28 @@ private:
                                    : inlierThreshold_;
     }
 
+    // With skipEarlierEdges, the time before which the window's timestamps belong to an earlier edge (else the
+    // oldest time there is). An edge crosses the window in its half-diagonal times its lifetime; when the pixel's
+    // previous crossing (of this polarity, with a plane) began more than twice that before the event, that edge
+    // had left the window before this one entered it, and what the window holds from before it left is its.
+    // Without this, an edge that comes back at a steady rate (a fan's blades) and fires sparsely gets planes
+    // through both edges: lifetimes a whole number of periods too long.
+    int64 earlierEdgeLeft(const Event& e, int64 origin, int p) const
+    {
+        const size_t idx = index(e.x, e.y, p);
+        const int64 previous = surface_[idx];
+        const CrossingPlane& plane = crossings_[idx];
+        const int64 none = std::numeric_limits<int64>::min();
+        if (!skipEarlierEdges_ || origin != e.t || previous == EventSurface::NO_EVENT || previous >= e.t ||
+            !plane.valid)
+            return none;
+        const double crossingUs = (window_ / 2) * std::sqrt(2.0) * 1000.0 *
+                                  std::sqrt((double)plane.a * plane.a + (double)plane.b * plane.b);
+        if (!((double)(e.t - previous) > 2 * crossingUs))
+            return none;
+        return previous + 1 + (int64)crossingUs;
+    }
+
     // RANSAC + refit, in time relative to @p origin (the event's own time, or its crossing's first), over the
     // past events up to the event's own time. On success, (a, b) is the time-surface gradient [ms/px].
     bool fit(const Event& e, int64 origin, int p, const Prediction& pred, LifetimeScratch& scratch, double& a,
@@ -426,7 +452,7 @@ private:
         double* const py = scratch.y.data();
         double* const pt = scratch.t.data();
         int m = 0;
-        const int64 oldest = timeBefore(origin, (int64)timeWindow_);
+        const int64 oldest = std::max(timeBefore(origin, (int64)timeWindow_), earlierEdgeLeft(e, origin, p));
         for (int dy = -r; dy <= r; dy++)
         {
             const int y = e.y + dy;
@@ -614,6 +640,7 @@ private:
     double predictionTolerance_ = 1000;
     bool usePrediction_ = true;
     double crossingLifetimes_ = 2.0;
+    bool skipEarlierEdges_ = true;
     int seed_ = 0;
     const PlaneInlierKernels& inlierKernels_ = planeInlierKernelsForThisCpu();
     std::vector<int64> surface_;

@@ -27,14 +27,16 @@ enum LifetimeStatus
 (Mueggler et al. @cite Mueggler2015, with the prediction shortcut of Hadviger et al. @cite Hadviger2019).
 
 For each event, the past events of its polarity in an N x N window no older than dt are taken in local
-coordinates (x, y relative to the event, t relative to the event in ms). The surface holds, per pixel, when
-an edge arrived: a blurred or strong edge fires a pixel several times as it passes, and the later events of
-such a crossing (see getCrossingLifetimes()) keep the first one's time there and are fitted at it. RANSAC
-hypotheses are planes t = a x + b y through the current event and two random past events (degenerate pairs are skipped); inliers
-lie within the inlier distance of the edge position the plane gives them (in pixels, so in time the
-threshold is that distance times the plane's time per pixel), and within the inlier threshold [ms]; the best hypothesis is accepted with at least
-minInliers inliers, and refitted by least squares on its inliers (t = a x + b y + c), regularised toward
-the plane predicted for this pixel when there is one. No accepted plane within the iteration cap: noise.
+coordinates (x, y relative to the event, t relative to the event in ms). The surface holds, per pixel, when an
+edge arrived: a blurred or strong edge fires a pixel several times as it passes, and the later events of such a
+crossing (see getCrossingLifetimes()) keep the first one's time there and are fitted at it. Where the pixel's
+previous crossing says an earlier edge had left the window before this one came, its timestamps are left out
+(see getSkipEarlierEdges()). RANSAC hypotheses are planes t = a x + b y through the current event and two random
+past events (degenerate pairs are skipped); inliers lie within the inlier distance of the edge position the
+plane gives them (in pixels, so in time the threshold is that distance times the plane's time per pixel), and
+within the inlier threshold [ms]; the best hypothesis is accepted with at least minInliers inliers, and refitted
+by least squares on its inliers (t = a x + b y + c), regularised toward the plane predicted for this pixel when
+there is one. No accepted plane within the iteration cap: noise.
 
 From the plane, g = (a, b) ms/px is the time-surface gradient: lifetime = |g| (the time the edge needs to
 move one pixel, sqrt(n1^2 + n2^2) / n3 for the plane normal n) and normal flow v = g / |g|^2 px/ms.
@@ -128,6 +130,15 @@ public:
     event starts a crossing and the surface holds each pixel's last time, as in Mueggler et al. */
     CV_WRAP virtual double getCrossingLifetimes() const = 0;
     CV_WRAP virtual void setCrossingLifetimes(double lifetimes) = 0;
+    /** @brief Leaves an earlier edge's timestamps out of the fit (default true). When the pixel's previous
+    crossing of this polarity had a plane and began more than twice the window's half-diagonal, in that
+    plane's lifetimes, before the event, that edge had left the window before this one entered it: the
+    window's timestamps from before it left (its crossing's time plus the half-diagonal in lifetimes) are the
+    earlier edge's and are not fitted. An edge that comes back at a steady rate and fires sparsely (a fan's
+    blades) otherwise gets planes through both edges, lifetimes a whole number of periods too long. false:
+    every timestamp within the time window is fitted, as in Mueggler et al. */
+    CV_WRAP virtual bool getSkipEarlierEdges() const = 0;
+    CV_WRAP virtual void setSkipEarlierEdges(bool skip) = 0;
     /** @brief Seed of the RANSAC sampling (default 0): results are deterministic. An event's samples are drawn
     from the seed and the event itself (pixel, polarity, time), not from a sequence shared by all events, so
     they do not depend on how many fits ran before it. */
