@@ -76,10 +76,10 @@ inline double defaultInlierDistance()
 
 /** Bright vertical bars, 4 px wide and 12 px apart, 1 m away, sliding right at @p speed px/s over a plain wall,
 seen by the realistic scenes' sensor (boxes: threshold spread, 0.5 ms refractory period, latency and jitter,
-noise) on a 64 x 32 crop, through a LifetimeEstimator with @p inlierDistance, @p timeWindowUs and, when not
-negative, @p crossingLifetimes and @p skipEarlierEdges. Returns the
-median ratio of the estimated lifetimes to the closed form 1 / speed over the left signal events after the first
-20 px of travel, and the share of them with a lifetime. The unit tests and the design_figures benchmark share it. */
+noise) on a 64 x 32 crop, through a LifetimeEstimator with @p inlierDistance, @p timeWindowUs,
+@p skipEarlierEdges and, when not negative, @p crossingLifetimes. Returns the median ratio of the estimated
+lifetimes to the closed form 1 / speed over the left signal events after the first 20 px of travel, and the
+share of them with a lifetime. The unit tests and the design_figures benchmark share it. */
 inline std::pair<double, double> barsLifetimeRatio(double speed, double logContrast, double blurPx,
                                                    double inlierDistance, double timeWindowUs = 100000,
                                                    double crossingLifetimes = -1, bool skipEarlierEdges = true)
