@@ -28,6 +28,7 @@
 
 #include "command_line.hpp"
 #include "algorithm_settings.hpp"
+#include "simulator_settings.hpp"
 #include "sample_evaluation.hpp"
 #include "sample_evaluation_pictures.hpp"
 #include "sample_evaluation_report.hpp"
@@ -74,37 +75,6 @@ const char* const keys =
     "{sensor-set  |            | simulator settings NAME=VALUE, comma separated (SimulatorSettings fields, e.g. jitterUs=300)}"
     "{min-quality | 0          | --method=lifetime: drop the lifetimes below this quality (0..1, LifetimeEstimator::process()); those events count as without a lifetime}";
 
-// --sensor-set: the numeric SimulatorSettings fields by name.
-void applySimulatorSetting(SimulatorSettings& s, const std::string& name, double value)
-{
-    const std::pair<const char*, double*> fields[] = {
-        { "thresholdOn", &s.thresholdOn }, { "thresholdOff", &s.thresholdOff }, { "thresholdSigma", &s.thresholdSigma }, { "thresholdNoise", &s.thresholdNoise }, { "blurSigmaPx", &s.blurSigmaPx },
-        { "rightThresholdScale", &s.rightThresholdScale }, { "refractoryUs", &s.refractoryUs },
-        { "noiseRateHz", &s.noiseRateHz }, { "latencyUs", &s.latencyUs }, { "latencySigmaUs", &s.latencySigmaUs },
-        { "jitterUs", &s.jitterUs }, { "hotPixelShare", &s.hotPixelShare }, { "hotPixelRateHz", &s.hotPixelRateHz },
-        { "leakRateHz", &s.leakRateHz }, { "rightRowOffset", &s.rightRowOffset }, { "rightRollRad", &s.rightRollRad },
-        { "maxPixelStep", &s.maxPixelStep }, { "flickerFrequencyHz", &s.flickerFrequencyHz },
-        { "rightClockOffsetUs", &s.rightClockOffsetUs }, { "rightClockDriftPpm", &s.rightClockDriftPpm },
-        { "extraLatencyUs.leftOn", &s.extraLatencyUs[0] }, { "extraLatencyUs.leftOff", &s.extraLatencyUs[1] },
-        { "extraLatencyUs.rightOn", &s.extraLatencyUs[2] }, { "extraLatencyUs.rightOff", &s.extraLatencyUs[3] }
-    };
-    for (const auto& f : fields)
-        if (name == f.first)
-        {
-            *f.second = value;
-            return;
-        }
-    if (name == "seed")
-    {
-        s.seed = (int)value;
-        return;
-    }
-    std::string known;
-    for (const auto& f : fields)
-        known += std::string(known.empty() ? "" : ", ") + f.first;
-    throw std::runtime_error("--sensor-set: no simulator setting \"" + name + "\" (" + known + ", seed)");
-}
-
 }  // namespace
 
 int main(int argc, char** argv)
@@ -148,8 +118,7 @@ int main(int argc, char** argv)
             if (!o.sensorSettings.empty())
             {
                 SimulatorSettings settings = sim->getSettings();
-                for (const std::pair<std::string, std::string>& item : parseNameValueList("--sensor-set", o.sensorSettings))
-                    applySimulatorSetting(settings, item.first, std::stod(item.second));
+                applySimulatorSettings(settings, o.sensorSettings);
                 sim = StereoEventSimulator::create(sim->getPlanes(), settings);
             }
             size = sim->getSensorSize();

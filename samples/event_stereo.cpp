@@ -4,7 +4,7 @@
 //   event_stereo [--input=FILE | --left=FILE --right=FILE | --live [--live-ms=MS]] [--record=FILE] [--calib=FILE] [--sensor=WxH]
 //                [--left-camera-value=0|1] [--one-based] [--right-time-offset-ms=MS|auto] [--mode=coupled|decoupled|fixed|sgbm]
 //                [--min-disparity=PX] [--max-disparity=PX] [--frame-ms=MS] [--threads=N] [--no-csv]
-//                [--all-frames] [--output=DIR] [--set=NAME=VALUE,...] [--scene=NAME --duration-ms=MS]
+//                [--all-frames] [--output=DIR] [--set=NAME=VALUE,...] [--scene=NAME --duration-ms=MS [--sensor-set=NAME=VALUE,...]]
 //                [--filter=NAME [--filter-set=NAME=VALUE,...]]        (no input: simulate, with ground truth)
 //
 // Writes into DIR: events.csv (t,x,y,p,camera,disparity,depth,lifetime,flags,confidence per event, x/y rectified),
@@ -80,6 +80,7 @@ const char* const keys =
     "{output            | output/event_stereo | output folder}"
     "{scene             | boxes      | simulated scene when no input is given: boxes, boxes_fast, walking, walking_near, low_contrast (realistic), boxes_pair, boxes_fast_pair, walking_pair (as a real DAVIS240 pair records them), boxes_flicker (a flickering lamp), fan, pendulum, pendulum_patterned (the TUM pairs' scenes, with --sensor=DVS128); plane, two_planes, moving_line, faint_line, cluttered}"
     "{duration-ms       | 1000       | length of the simulated scene [ms]}"
+    "{sensor-set        |            | the simulated scene's sensor and rig settings NAME=VALUE, comma separated (SimulatorSettings fields, e.g. rightScale=0.0075,jitterUs=300)}"
     "{set               |            | matcher parameters NAME=VALUE, comma separated (e.g. uniquenessRatio=20,costWindow=11)}"
     "{filter            |            | a noise filter in front of the matcher: background_activity, trail, refractory, hot_pixels, anti_flicker}"
     "{filter-set        |            | filter parameters NAME=VALUE, comma separated (e.g. correlationTime=10000)}";
@@ -123,6 +124,7 @@ bool parse(int argc, char** argv, Options& o)
     o.allFrames = cmd.has("all-frames");
     o.output = cmd.get<std::string>("output");
     o.scene = cmd.get<std::string>("scene");
+    o.sensorSettings = cmd.get<std::string>("sensor-set");
     if (o.simulated() && cmd.has("sensor"))
         o.sceneModel = sceneSensorModel(cmd.get<std::string>("sensor"));
     o.durationMs = cmd.get<double>("duration-ms");
@@ -186,7 +188,7 @@ int main(int argc, char** argv)
         }
         const int zoom = samplePictureZoom(size);
         VideoWriter video;
-        SampleStereoTally tally(opt.minDisparity, opt.maxDisparity);
+        SampleStereoTally tally(opt.minDisparity, opt.maxDisparity, size.width);
         int64 pictures = 0, windows = 0, filtered = 0;
         int lastEighth = 0;
         SampleProgress progress;

@@ -7,6 +7,7 @@
 #include <opencv2/event.hpp>
 
 #include "command_line.hpp"
+#include "simulator_settings.hpp"
 
 #include <algorithm>
 #include <stdexcept>
@@ -17,6 +18,7 @@
 struct StereoSourceOptions
 {
     std::string input, left, right, scene;
+    std::string sensorSettings;  // --sensor-set: the simulated scene's SimulatorSettings changed by name
     bool live = false, oneBased = false;
     double liveMs = 0, durationMs = 0, frameMs = 0, rightTimeOffsetMs = 0;
     cv::Size sensor;
@@ -50,18 +52,22 @@ public:
         if (o.simulated())
         {
             sim_ = cv::event::StereoEventSimulator::create(o.scene, o.sceneModel);
-            if (o.rightTimeOffsetMs != 0)
+            if (o.rightTimeOffsetMs != 0 || !o.sensorSettings.empty())
             {
-                // The simulated right camera restamped as a capture would do it.
                 cv::event::SimulatorSettings s = sim_->getSettings();
+                applySimulatorSettings(s, o.sensorSettings);
+                // The simulated right camera restamped as a capture would do it.
                 s.rightClockOffsetUs += o.rightTimeOffsetMs * 1000;
                 sim_ = cv::event::StereoEventSimulator::create(sim_->getPlanes(), s);
             }
             durationUs_ = o.durationMs * 1000;
             windowUs_ = o.frameMs * 1000;
-            name_ = "simulated scene \"" + o.scene + "\" (" + std::to_string((int)o.durationMs) + " ms)";
+            name_ = "simulated scene \"" + o.scene + "\" (" + std::to_string((int)o.durationMs) + " ms" +
+                    (o.sensorSettings.empty() ? std::string() : ", " + o.sensorSettings) + ")";
             return;
         }
+        if (!o.sensorSettings.empty())
+            throw std::runtime_error("--sensor-set: only for a simulated scene (--scene), not a recording or a live pair");
         cap_.set(cv::event::EVENT_CAP_PROP_TEXT_LEFT_CAMERA_VALUE, o.leftCameraValue);
         cap_.set(cv::event::EVENT_CAP_PROP_TEXT_ONE_BASED, o.oneBased);
         cap_.set(cv::event::EVENT_CAP_PROP_RIGHT_TIME_OFFSET_US, o.rightTimeOffsetMs * 1000);

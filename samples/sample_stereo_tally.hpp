@@ -18,8 +18,9 @@
 class SampleStereoTally
 {
 public:
-    SampleStereoTally(int minDisparity, int maxDisparity)
-        : minDisparity_(minDisparity), histogram_((size_t)(maxDisparity - minDisparity + 1), 0), confidences_(101, 0)
+    SampleStereoTally(int minDisparity, int maxDisparity, int sensorWidth)
+        : minDisparity_(minDisparity), sensorWidth_(sensorWidth), histogram_((size_t)(maxDisparity - minDisparity + 1), 0),
+          confidences_(101, 0)
     {
     }
 
@@ -28,7 +29,10 @@ public:
              const cv::Mat& confidence, const cv::Mat& truth)
     {
         if (!truth.empty())
+        {
             cv::event::scoreStereoEvents(packet, disparity, truth, scores);
+            addSignedErrors(packet, disparity, truth);
+        }
         for (size_t i = 0; i < packet.size(); i++)
         {
             const int camera = packet[i].camera;
@@ -91,7 +95,10 @@ public:
                            pct(scores.leftEstimated - scores.leftWithin2, scores.leftSignal),
                            pct(scores.leftSignal - scores.leftEstimated, scores.leftSignal))
              << " % |\n"
-             << "| ground truth: mean absolute disparity error | " << scores.meanAbsError() << " px |\n";
+             << "| ground truth: mean absolute disparity error | " << scores.meanAbsError() << " px |\n"
+             << "| ground truth: mean signed error of the left estimates within 3 px, by third of the columns (left / "
+                "middle / right) | "
+             << signedError(0) << " / " << signedError(1) << " / " << signedError(2) << " px |\n";
         return text.str();
     }
 
@@ -149,8 +156,36 @@ private:
                           100.0 * (double)low / (double)n, lowConfidence);
     }
 
-    int minDisparity_;
+    // The left camera's signal events estimated within 3 px of the truth: the sum of their signed errors (in
+    // 1/1024 px, so that any order of addition gives the same sum) and their count, per third of the columns. A
+    // constant error is a disparity bias; one that grows across the image, a right camera whose focal length the
+    // rectification got a little wrong (SimulatorSettings::rightScale), which no matcher can correct.
+    void addSignedErrors(const std::vector<cv::event::Event>& packet, const cv::Mat& disparity, const cv::Mat& truth)
+    {
+        for (size_t i = 0; i < packet.size(); i++)
+        {
+            const double d = disparity.at<float>((int)i), t = truth.at<float>((int)i, cv::event::GT_DISPARITY);
+            const int flags = (int)truth.at<float>((int)i, cv::event::GT_FLAGS);
+            if (packet[i].camera != cv::event::CAMERA_LEFT || (flags & cv::event::GT_FLAG_NOISE) || d < 0 || std::abs(d - t) > 3)
+                continue;
+            const int third = std::min(2, 3 * std::max(0, (int)packet[i].x) / std::max(1, sensorWidth_));
+            signedErrorSum_[third] += (int64_t)std::floor((d - t) * 1024 + 0.5);
+            signedErrorCount_[third]++;
+        }
+    }
+    std::string signedError(int third) const
+    {
+        if (signedErrorCount_[third] == 0)
+            return "-";
+        // Rounded to the hundredth here, so that an error just below zero reads +0.00, not -0.00.
+        const double mean = (double)signedErrorSum_[third] / 1024.0 / (double)signedErrorCount_[third];
+        const double rounded = std::floor(mean * 100 + 0.5) / 100;
+        return cv::format("%+.2f", rounded == 0 ? 0.0 : rounded);
+    }
+
+    int minDisparity_, sensorWidth_;
     std::vector<int64_t> histogram_, confidences_;
+    int64_t signedErrorSum_[3] = { 0, 0, 0 }, signedErrorCount_[3] = { 0, 0, 0 };
     int64_t perCamera_[2] = { 0, 0 }, withDisparity_[2] = { 0, 0 }, withLifetime_[2] = { 0, 0 };
 };
 

@@ -7,7 +7,8 @@
 # when given); optionally the median
 # confidence of the left estimates (MEDIAN_CONFIDENCE "lo;hi", a recording's documented figure); optionally the
 # disparity the pair's events line up at (LINE_UP_DISPARITY, within 1 px) and a text the summary must hold
-# (SUMMARY_REGEX, e.g. a warning) or must not hold (SUMMARY_NOT_REGEX); that stderr does not match
+# (SUMMARY_REGEX, e.g. a warning) or must not hold (SUMMARY_NOT_REGEX); optionally the mean signed error of each
+# third of the columns (SIGNED_ERRORS "lo;hi;lo;hi;lo;hi", left to right); that stderr does not match
 # STDERR_NOT_REGEX (e.g. no warning on the built-in recording); and that the files REQUIRED_FILES names were written. EXPECTED_DISPARITY
 # may be left out where the dominant disparity means nothing (a pair given the wrong way round).
 foreach(v SAMPLE OUTPUT_DIR REQUIRED_FILES)
@@ -103,6 +104,23 @@ if(DEFINED LINE_UP_DISPARITY)
     message(FATAL_ERROR "the events line up at ${CMAKE_MATCH_1} px, expected ${LINE_UP_DISPARITY} +/- 1 px")
   endif()
   message("the events line up at ${CMAKE_MATCH_1} px (expected ${LINE_UP_DISPARITY})")
+endif()
+if(DEFINED SIGNED_ERRORS)
+  if(NOT summary MATCHES "mean signed error[^|]*\\| ([-+0-9.]+) / ([-+0-9.]+) / ([-+0-9.]+) px")
+    message(FATAL_ERROR "no signed errors by third of the columns in summary.md")
+  endif()
+  foreach(third 0 1 2)
+    math(EXPR match "${third} + 1")
+    string(REPLACE "+" "" value "${CMAKE_MATCH_${match}}")
+    math(EXPR at "2 * ${third}")
+    list(GET SIGNED_ERRORS ${at} lo)
+    math(EXPR at "${at} + 1")
+    list(GET SIGNED_ERRORS ${at} hi)
+    if(value LESS lo OR value GREATER hi)
+      message(FATAL_ERROR "mean signed error of third ${third} of the columns: ${value} px, expected ${lo}..${hi} px")
+    endif()
+    message("mean signed error of third ${third} of the columns: ${value} px (expected ${lo}..${hi})")
+  endforeach()
 endif()
 if(DEFINED SUMMARY_REGEX AND NOT summary MATCHES "${SUMMARY_REGEX}")
   message(FATAL_ERROR "summary.md does not say '${SUMMARY_REGEX}'")

@@ -111,8 +111,12 @@ def check_clocks(a, calibration):
 class Tally:
     """The summary's counts, as event_stereo keeps them."""
 
-    def __init__(self, min_disparity, max_disparity):
+    def __init__(self, min_disparity, max_disparity, sensor_width):
         self.min_disparity = min_disparity
+        self.sensor_width = sensor_width
+        # Per third of the columns: the sum of the signed errors [1/1024 px] and the count (Tally.signed_error).
+        self.signed_error_sum = np.zeros(3, np.int64)
+        self.signed_error_count = np.zeros(3, np.int64)
         self.histogram = np.zeros(max_disparity - min_disparity + 1, np.int64)
         self.confidences = np.zeros(101, np.int64)
         self.per_camera = np.zeros(2, np.int64)
@@ -124,6 +128,7 @@ class Tally:
         if truth is not None:
             self.scores = ev.scoreStereoEvents(records, disparity, truth,
                                                self.scores if self.scores is not None else ev.StereoEventScores())
+            self.add_signed_errors(records, disparity, truth)
         camera = records["camera"].astype(np.intp)
         found = disparity >= 0
         self.per_camera += np.bincount(camera, minlength=2)
@@ -135,6 +140,26 @@ class Tally:
         # Rounded half away from zero, as std::lround.
         k = np.floor(disparity[found].astype(np.float64) + 0.5).astype(np.int64) - self.min_disparity
         self.histogram += np.bincount(np.clip(k, 0, len(self.histogram) - 1), minlength=len(self.histogram))
+
+    def add_signed_errors(self, records, disparity, truth):
+        """The left camera's signal events estimated within 3 px of the truth, per third of the columns: a constant
+        error is a disparity bias, one that grows across the image a right camera whose focal length the
+        rectification got a little wrong."""
+        truth = np.asarray(truth, np.float32).reshape(len(records), -1)
+        d = disparity.astype(np.float64)
+        error = d - truth[:, ev.GT_DISPARITY].astype(np.float64)
+        signal = (truth[:, ev.GT_FLAGS].astype(np.int64) & ev.GT_FLAG_NOISE) == 0
+        use = (records["camera"] == ev.CAMERA_LEFT) & signal & (d >= 0) & (np.abs(error) <= 3)
+        third = np.minimum(2, 3 * np.maximum(0, records["x"][use].astype(np.int64)) // max(1, self.sensor_width))
+        np.add.at(self.signed_error_sum, third, np.floor(error[use] * 1024 + 0.5).astype(np.int64))
+        self.signed_error_count += np.bincount(third, minlength=3)
+
+    def signed_error(self, third):
+        n = self.signed_error_count[third]
+        if not n:
+            return "-"
+        rounded = np.floor(self.signed_error_sum[third] / 1024.0 / n * 100 + 0.5) / 100
+        return "%+.2f" % (rounded if rounded != 0 else 0.0)
 
     def events(self):
         return int(self.per_camera.sum())
@@ -205,7 +230,7 @@ def main(argv):
     csv = None if a.no_csv else open(os.path.join(a.output, "events.csv"), "w")
     if csv:
         csv.write("t,x,y,p,camera,disparity,depth,lifetime,flags,confidence\n")
-    tally = Tally(a.min_disparity, a.max_disparity)
+    tally = Tally(a.min_disparity, a.max_disparity, size[0])
     pair = PairSample()
     windows = pictures = 0
     last_eighth = 0
@@ -269,7 +294,9 @@ def main(argv):
                  ("ground truth: left signal events 1-2 px off / over 2 px off / without a disparity", "%.1f / %.1f / %.1f %%" % (
                      pct(s.leftWithin2 - s.leftWithin1, s.leftSignal), pct(s.leftEstimated - s.leftWithin2, s.leftSignal),
                      pct(s.leftSignal - s.leftEstimated, s.leftSignal))),
-                 ("ground truth: mean absolute disparity error", "%s px" % g(s.meanAbsError()))]
+                 ("ground truth: mean absolute disparity error", "%s px" % g(s.meanAbsError())),
+                 ("ground truth: mean signed error of the left estimates within 3 px, by third of the columns (left / "
+                  "middle / right)", "%s / %s / %s px" % tuple(tally.signed_error(k) for k in range(3)))]
     rows.append(("outputs", "%s%d of %d windows as disparity_NNNNN.png%s, disparity_histogram.png" % (
         "" if a.no_csv else "events.csv, ", pictures, windows, " (+ depth_NNNNN.png)" if calibration is not None else "")))
     text = "# event_stereo summary\n\n| | |\n|---|---|\n" + "".join("| %s | %s |\n" % r for r in rows)

@@ -441,9 +441,9 @@ Point bestShift(const Mat& left, const Mat& right, int x0, int x1)
     return best;
 }
 
-TEST(Event_SimulatorSensor, imperfect_rectification_moves_the_right_cameras_rows)
+TEST(Event_SimulatorSensor, imperfect_rectification_moves_the_right_cameras_rows_and_columns)
 {
-    for (int variant = 0; variant < 3; variant++)
+    for (int variant = 0; variant < 5; variant++)
     {
         Ptr<StereoEventSimulator> ideal = StereoEventSimulator::create("plane");
         SimulatorSettings s = ideal->getSettings();
@@ -451,6 +451,10 @@ TEST(Event_SimulatorSensor, imperfect_rectification_moves_the_right_cameras_rows
             s.rightRowOffset = 2.0;
         if (variant == 2)
             s.rightRollRad = 0.02;  // 2 px at 100 px from the centre
+        if (variant == 3)
+            s.rightColumnOffset = 3.0;
+        if (variant == 4)
+            s.rightScale = -0.02;  // 2 px at 100 px from the centre
         Ptr<StereoEventSimulator> sim = StereoEventSimulator::create(ideal->getPlanes(), s);
         std::vector<Event> ev;
         Mat gt;
@@ -466,15 +470,17 @@ TEST(Event_SimulatorSensor, imperfect_rectification_moves_the_right_cameras_rows
         const Point leftStrip = bestShift(counts[0], counts[1], 20, 60);
         const Point middle = bestShift(counts[0], counts[1], 120, 160);
         const Point rightStrip = bestShift(counts[0], counts[1], 170, 210);
-        EXPECT_EQ(20, leftStrip.x) << variant;
-        EXPECT_EQ(20, middle.x) << variant;
-        EXPECT_EQ(20, rightStrip.x) << variant;
+        // Columns: the disparity 20 less the column offset, less the scale times the right camera's distance from
+        // the centre (cx = 119.5; the strips' centres 40, 140 and 190 are seen around 20, 120 and 170): -2, 0, +1
+        // px with the scale.
+        const int columns[5][3] = { { 20, 20, 20 }, { 20, 20, 20 }, { 20, 20, 20 }, { 17, 17, 17 }, { 18, 20, 21 } };
         // Rows: 0 everywhere; +2 everywhere with the offset; with the roll, sin(roll) * (x - cx) in the right
-        // camera: -2, 0 and +1 px.
-        const int expected[3][3] = { { 0, 0, 0 }, { 2, 2, 2 }, { -2, 0, 1 } };
-        EXPECT_EQ(expected[variant][0], leftStrip.y) << variant << ": " << leftStrip << middle << rightStrip;
-        EXPECT_EQ(expected[variant][1], middle.y) << variant << ": " << leftStrip << middle << rightStrip;
-        EXPECT_EQ(expected[variant][2], rightStrip.y) << variant << ": " << leftStrip << middle << rightStrip;
+        // camera: -2, 0 and +1 px. The scale moves rows by at most 1 px at the strips' ends, 0 on the whole.
+        const int rows[5][3] = { { 0, 0, 0 }, { 2, 2, 2 }, { -2, 0, 1 }, { 0, 0, 0 }, { 0, 0, 0 } };
+        const Point found[3] = { leftStrip, middle, rightStrip };
+        for (int k = 0; k < 3; k++)
+            EXPECT_EQ(Point(columns[variant][k], rows[variant][k]), found[k])
+                << "variant " << variant << ", strip " << k << ": " << leftStrip << middle << rightStrip;
     }
 }
 

@@ -118,11 +118,12 @@ public:
         if (!(s.latencyUs >= 0 && s.latencySigmaUs >= 0 && s.jitterUs >= 0 && s.hotPixelShare >= 0 &&
               s.hotPixelShare <= 1 && s.hotPixelRateHz >= 0 && s.leakRateHz >= 0 && s.noiseRateHz >= 0 &&
               std::abs(s.rightRollRad) < 0.5 && std::abs(s.rightRowOffset) < s.resolution.height &&
+              std::abs(s.rightScale) < 0.5 && std::abs(s.rightColumnOffset) < s.resolution.width &&
               s.thresholdNoise >= 0 && s.blurSigmaPx >= 0 && s.blurSigmaPx <= 10 && s.extraLatencyUs[0] >= 0 &&
               s.extraLatencyUs[1] >= 0 && s.extraLatencyUs[2] >= 0 && s.extraLatencyUs[3] >= 0 &&
               std::abs(s.rightClockOffsetUs) < 1e12 && std::abs(s.rightClockDriftPpm) < 1e5))
             CV_Error(Error::StsBadArg, "StereoEventSimulator: latencies, jitter, rates and the hot-pixel share must "
-                                       "be >= 0 (share <= 1), the roll below 0.5 rad, the row offset within the image, "
+                                       "be >= 0 (share <= 1), the roll and the scale below 0.5, the offsets within the image, "
                                        "the blur at most 10 px, the right clock's drift below 1e5 ppm");
         for (const SimulatedPlane& p : planes)
         {
@@ -342,8 +343,10 @@ private:
         const Size sz = s_.resolution;
         const double f = s_.focalLength, cx = 0.5 * (sz.width - 1), cy = 0.5 * (sz.height - 1);
         const Vec3d origin(camera == CAMERA_RIGHT ? s_.baseline : 0.0, 0, 0);
-        // The right camera's pixel grid against the ideal rectified one (rightRollRad, rightRowOffset).
-        const bool misrectified = camera == CAMERA_RIGHT && (s_.rightRollRad != 0 || s_.rightRowOffset != 0);
+        // The right camera's pixel grid against the ideal rectified one (rightRollRad, rightScale, rightColumnOffset,
+        // rightRowOffset).
+        const bool misrectified = camera == CAMERA_RIGHT && (s_.rightRollRad != 0 || s_.rightRowOffset != 0 ||
+                                                             s_.rightScale != 0 || s_.rightColumnOffset != 0);
         const double flickerWave = flickering_ ? std::sin(2 * CV_PI * s_.flickerFrequencyHz * tUs * 1e-6) : 0.0;
         const double cr = std::cos(s_.rightRollRad), sr = std::sin(s_.rightRollRad);
         std::vector<PlanePose> poses;
@@ -387,9 +390,10 @@ private:
                 Vec3d d((x - cx) / f, (y - cy) / f, 1.0);
                 if (misrectified)
                 {
-                    // Raw pixel -> ideal pixel: undo the offset, then the roll.
-                    const double rx = x - cx, ry = y - cy - s_.rightRowOffset;
-                    d = Vec3d((cr * rx + sr * ry) / f, (-sr * rx + cr * ry) / f, 1.0);
+                    // Raw pixel -> ideal pixel: undo the offsets, the scale, then the roll.
+                    const double rx = x - cx - s_.rightColumnOffset, ry = y - cy - s_.rightRowOffset;
+                    const double g = f * (1 + s_.rightScale);
+                    d = Vec3d((cr * rx + sr * ry) / g, (-sr * rx + cr * ry) / g, 1.0);
                 }
                 const int i = y * sz.width + x;
                 if (reuseStatic && !movingMayHit(d))

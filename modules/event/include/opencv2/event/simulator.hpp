@@ -123,11 +123,16 @@ struct CV_EXPORTS SimulatorSettings
     GT_FLAG_NOISE). */
     double leakRateHz = 0;
     /** Imperfect rectification of the right camera: its pixel grid is rotated by rightRollRad about the image
-    centre and shifted down by rightRowOffset [px] against the ideal rectified camera, so a point at ideal
-    pixel (u, v) is seen at R(roll) (u - cx, v - cy) + (cx, cy + rightRowOffset). The ground-truth disparity
-    stays the ideal f B / Z. */
+    centre, scaled about it by 1 + rightScale (its focal length calibrated that much off) and shifted by
+    rightColumnOffset and rightRowOffset [px] (its principal point off) against the ideal rectified camera, so a
+    point at ideal pixel (u, v) is seen at (1 + rightScale) R(roll) (u - cx, v - cy) + (cx + rightColumnOffset,
+    cy + rightRowOffset). The ground-truth disparity stays the ideal f B / Z: the column offset and the scale
+    move what the right camera sees along the rows, so a match against it is off the truth by -rightColumnOffset
+    - rightScale (u - d - cx) px, which no matcher can tell from the scene's own depth. */
     double rightRowOffset = 0;
     double rightRollRad = 0;           //!< @copydoc rightRowOffset
+    double rightScale = 0;             //!< @copydoc rightRowOffset
+    double rightColumnOffset = 0;      //!< @copydoc rightRowOffset
     /** Frequency of the planes' flicker (SimulatedPlane::flickerDepth) [Hz]. While a plane flickers, render
     steps are at most 1/40 of its period long. */
     double flickerFrequencyHz = 100;
