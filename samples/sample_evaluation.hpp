@@ -7,6 +7,7 @@
 #include <opencv2/event.hpp>
 
 #include "algorithm_settings.hpp"
+#include "sample_signed_errors.hpp"
 #include "stereo_method.hpp"
 
 #include <algorithm>
@@ -235,6 +236,8 @@ struct EvaluationTotals
     // Every event's best estimate (no rejection) with its confidence, for the precision at a density; empty bins
     // for a method without a confidence.
     StereoEventScores ranking;
+    // The left estimates' mean signed error by third of the columns (a rectification a little off).
+    SampleSignedErrors signedErrors;
     // The left events' estimated and true disparities of the last window (0: none), for the pictures.
     Mat lastEstimate, lastTruth;
 
@@ -251,6 +254,8 @@ struct EvaluationTotals
             const std::array<float, 6>& g = truth[i];
             const int flags = (int)g[GT_FLAGS];
             events++;
+            if (estimate.hasDisparity)
+                signedErrors.add(window[i], size.width, estimate.disparity[i], g[GT_DISPARITY], flags);
             const bool isNoise = (flags & GT_FLAG_NOISE) != 0;
             noiseTrue += isNoise;
             if (estimate.hasLifetime)

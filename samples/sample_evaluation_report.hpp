@@ -135,6 +135,8 @@ inline void writeEvaluationReport(const EvaluationReport& r, const EvaluationTot
            << "| ... with no rejection (every event's best estimate): density, precision | "
            << (!ranked ? std::string("n/a") : percent(fullDensity) + ", " + percent(atFull)) << " |\n"
            << "| mean absolute disparity error | " << mae << " px |\n"
+           << "| mean signed error of the left estimates within 3 px, by third of the columns (left / middle / right) | "
+           << acc.signedErrors.text() << " |\n"
            << "| mean relative depth error | " << relDepth << " % |\n";
     if (lifetimes)
         md << "| lifetime median relative error | " << lifetimeError << (acc.lifetimeError.empty() ? "" : " %") << " |\n"

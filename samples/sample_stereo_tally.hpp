@@ -8,6 +8,8 @@
 #include <opencv2/event.hpp>
 #include <opencv2/imgproc.hpp>
 
+#include "sample_signed_errors.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -31,7 +33,9 @@ public:
         if (!truth.empty())
         {
             cv::event::scoreStereoEvents(packet, disparity, truth, scores);
-            addSignedErrors(packet, disparity, truth);
+            for (size_t i = 0; i < packet.size(); i++)
+                signedErrors_.add(packet[i], sensorWidth_, disparity.at<float>((int)i),
+                                  truth.at<float>((int)i, cv::event::GT_DISPARITY), (int)truth.at<float>((int)i, cv::event::GT_FLAGS));
         }
         for (size_t i = 0; i < packet.size(); i++)
         {
@@ -98,7 +102,7 @@ public:
              << "| ground truth: mean absolute disparity error | " << scores.meanAbsError() << " px |\n"
              << "| ground truth: mean signed error of the left estimates within 3 px, by third of the columns (left / "
                 "middle / right) | "
-             << signedError(0) << " / " << signedError(1) << " / " << signedError(2) << " px |\n";
+             << signedErrors_.text() << " |\n";
         return text.str();
     }
 
@@ -156,36 +160,9 @@ private:
                           100.0 * (double)low / (double)n, lowConfidence);
     }
 
-    // The left camera's signal events estimated within 3 px of the truth: the sum of their signed errors (in
-    // 1/1024 px, so that any order of addition gives the same sum) and their count, per third of the columns. A
-    // constant error is a disparity bias; one that grows across the image, a right camera whose focal length the
-    // rectification got a little wrong (SimulatorSettings::rightScale), which no matcher can correct.
-    void addSignedErrors(const std::vector<cv::event::Event>& packet, const cv::Mat& disparity, const cv::Mat& truth)
-    {
-        for (size_t i = 0; i < packet.size(); i++)
-        {
-            const double d = disparity.at<float>((int)i), t = truth.at<float>((int)i, cv::event::GT_DISPARITY);
-            const int flags = (int)truth.at<float>((int)i, cv::event::GT_FLAGS);
-            if (packet[i].camera != cv::event::CAMERA_LEFT || (flags & cv::event::GT_FLAG_NOISE) || d < 0 || std::abs(d - t) > 3)
-                continue;
-            const int third = std::min(2, 3 * std::max(0, (int)packet[i].x) / std::max(1, sensorWidth_));
-            signedErrorSum_[third] += (int64_t)std::floor((d - t) * 1024 + 0.5);
-            signedErrorCount_[third]++;
-        }
-    }
-    std::string signedError(int third) const
-    {
-        if (signedErrorCount_[third] == 0)
-            return "-";
-        // Rounded to the hundredth here, so that an error just below zero reads +0.00, not -0.00.
-        const double mean = (double)signedErrorSum_[third] / 1024.0 / (double)signedErrorCount_[third];
-        const double rounded = std::floor(mean * 100 + 0.5) / 100;
-        return cv::format("%+.2f", rounded == 0 ? 0.0 : rounded);
-    }
-
     int minDisparity_, sensorWidth_;
     std::vector<int64_t> histogram_, confidences_;
-    int64_t signedErrorSum_[3] = { 0, 0, 0 }, signedErrorCount_[3] = { 0, 0, 0 };
+    SampleSignedErrors signedErrors_;
     int64_t perCamera_[2] = { 0, 0 }, withDisparity_[2] = { 0, 0 }, withLifetime_[2] = { 0, 0 };
 };
 
