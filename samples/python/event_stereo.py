@@ -142,9 +142,9 @@ class Tally:
         self.histogram += np.bincount(np.clip(k, 0, len(self.histogram) - 1), minlength=len(self.histogram))
 
     def add_signed_errors(self, records, disparity, truth):
-        """The left camera's signal events estimated within 3 px of the truth, per third of the columns: a constant
-        error is a disparity bias, one that grows across the image a right camera whose focal length the
-        rectification got a little wrong."""
+        """The left camera's signal events estimated within 3 px of the truth, per third of the columns, as
+        samples/sample_signed_errors.hpp counts them: one sign everywhere is a principal point off, a sign that
+        changes across the image a focal length off."""
         truth = np.asarray(truth, np.float32).reshape(len(records), -1)
         d = disparity.astype(np.float64)
         error = d - truth[:, ev.GT_DISPARITY].astype(np.float64)
