@@ -31,16 +31,14 @@ public:
              const cv::Mat& confidence, const cv::Mat& truth)
     {
         if (!truth.empty())
-        {
             cv::event::scoreStereoEvents(packet, disparity, truth, scores);
-            for (size_t i = 0; i < packet.size(); i++)
-                signedErrors_.add(packet[i], sensorWidth_, disparity.at<float>((int)i),
-                                  truth.at<float>((int)i, cv::event::GT_DISPARITY), (int)truth.at<float>((int)i, cv::event::GT_FLAGS));
-        }
         for (size_t i = 0; i < packet.size(); i++)
         {
             const int camera = packet[i].camera;
             const float d = disparity.at<float>((int)i);
+            if (!truth.empty())
+                signedErrors_.add(packet[i], sensorWidth_, d, truth.at<float>((int)i, cv::event::GT_DISPARITY),
+                                  (int)truth.at<float>((int)i, cv::event::GT_FLAGS));
             perCamera_[camera]++;
             withDisparity_[camera] += d >= 0;
             withLifetime_[camera] += (flags.at<int>((int)i) & cv::event::STEREO_HAS_LIFETIME) != 0;
