@@ -101,6 +101,18 @@ struct Render
 {
     std::vector<float> logI, depth, flowX, flowY;
     std::vector<float> flickerLogI;  // with flickering planes: the flicker's share of logI (log of its factor)
+    // The planes at the render's time, for the rays the ground truth casts between the pixel centres.
+    std::vector<PlanePose> poses;
+    std::vector<PlaneInView> views;
+};
+
+// Where a ray meets the nearest plane: its index (-1: none), the depth, the point and its in-plane coordinates.
+struct RayHit
+{
+    int plane = -1;
+    double depth = std::numeric_limits<double>::infinity();
+    Vec3d point;
+    double a = 0, b = 0;
 };
 
 class StereoEventSimulatorImpl CV_FINAL : public StereoEventSimulator
@@ -137,6 +149,10 @@ public:
         for (size_t k = 0; k < planes.size(); k++)
             if (!isStatic(planes[k]))
                 movingPlanes_.push_back((int)k);
+        rollCos_ = std::cos(s.rightRollRad);
+        rollSin_ = std::sin(s.rightRollRad);
+        for (int j = 0; j < EDGE_STEPS; j++)
+            circle_.push_back(Vec2d(std::cos(2 * CV_PI * j / EDGE_STEPS), std::sin(2 * CV_PI * j / EDGE_STEPS)));
         const int n = s.resolution.area();
         RNG latencyRng((uint64)(s.seed * 7919 + 101)), hotPixelRng((uint64)(s.seed * 7919 + 202));
         delayed_ = s.latencyUs > 0 || s.latencySigmaUs > 0 || s.jitterUs > 0 || s.extraLatencyUs != Vec4d::all(0);
@@ -334,6 +350,66 @@ private:
         return p.velocity == Vec3d::all(0) && p.angularVelocity == Vec3d::all(0) && p.swingAmplitude == 0;
     }
 
+    // The direction (z = 1) of the ray through point (x, y) of @p camera's pixel grid, pixel centres at whole
+    // coordinates. The right camera's grid may be off the ideal rectified one (rightRollRad, rightScale,
+    // rightColumnOffset, rightRowOffset).
+    Vec3d rayDirection(int camera, double x, double y) const
+    {
+        const Size sz = s_.resolution;
+        const double f = s_.focalLength, cx = 0.5 * (sz.width - 1), cy = 0.5 * (sz.height - 1);
+        if (camera == CAMERA_RIGHT && (s_.rightRollRad != 0 || s_.rightRowOffset != 0 || s_.rightScale != 0 ||
+                                       s_.rightColumnOffset != 0))
+        {
+            // Raw pixel -> ideal pixel: undo the offsets, the scale, then the roll.
+            const double cr = rollCos_, sr = rollSin_;
+            const double rx = x - cx - s_.rightColumnOffset, ry = y - cy - s_.rightRowOffset;
+            const double g = f * (1 + s_.rightScale);
+            return Vec3d((cr * rx + sr * ry) / g, (-sr * rx + cr * ry) / g, 1.0);
+        }
+        return Vec3d((x - cx) / f, (y - cy) / f, 1.0);
+    }
+
+    // The nearest of the planes (posed as in @p poses) that the ray from @p origin along @p d hits.
+    RayHit castRay(const std::vector<PlanePose>& poses, const std::vector<PlaneInView>& views, const Vec3d& origin,
+                   const Vec3d& d, bool staticOnly = false) const
+    {
+        RayHit h;
+        for (size_t k = 0; k < planes_.size(); k++)
+        {
+            const PlaneInView& view = views[k];
+            if (!view.mayHit(d) || (staticOnly && !isStatic(planes_[k])))
+                continue;
+            const PlanePose& q = poses[k];
+            const double denom = q.n.dot(d);
+            if (std::abs(denom) < 1e-12)
+                continue;
+            const double s = view.distance / denom;  // depth along +Z, since d.z = 1
+            if (s <= 1e-6 || s >= h.depth)
+                continue;
+            const Vec3d pt = origin + s * d;
+            const double a = q.u.dot(pt - q.c), b = q.v.dot(pt - q.c);
+            if (std::abs(a) > planes_[k].halfSize[0] || std::abs(b) > planes_[k].halfSize[1])
+                continue;
+            h.depth = s;
+            h.plane = (int)k;
+            h.point = pt;
+            h.a = a;
+            h.b = b;
+        }
+        return h;
+    }
+
+    // The log intensity a ray's hit shows without flicker (the background's where it hits nothing).
+    float steadyLogIntensity(const std::vector<PlanePose>& poses, const std::vector<PlaneInView>& views,
+                             const RayHit& h) const
+    {
+        if (h.plane < 0)
+            return (float)std::log(s_.backgroundIntensity);
+        const SimulatedPlane& p = planes_[(size_t)h.plane];
+        return p.texture == TEXTURE_UNIFORM ? views[(size_t)h.plane].uniformLogI
+                                            : (float)std::log(std::max(texture(p, poses[(size_t)h.plane], h.a, h.b), 1e-4));
+    }
+
     // Ray-casts one camera at time t: log intensity, depth, and the image motion of the visible point.
     // @p staticOnly: the static planes alone, sharp (staticScene_). Otherwise a pixel that no moving plane can
     // reach takes its static result as it is, unless the scene flickers (its intensities change with time): the
@@ -341,16 +417,18 @@ private:
     void render(int camera, double tUs, Render& out, bool staticOnly = false) const
     {
         const Size sz = s_.resolution;
-        const double f = s_.focalLength, cx = 0.5 * (sz.width - 1), cy = 0.5 * (sz.height - 1);
+        const double f = s_.focalLength;
         const Vec3d origin(camera == CAMERA_RIGHT ? s_.baseline : 0.0, 0, 0);
         // The right camera's pixel grid against the ideal rectified one (rightRollRad, rightScale, rightColumnOffset,
         // rightRowOffset).
         const bool misrectified = camera == CAMERA_RIGHT && (s_.rightRollRad != 0 || s_.rightRowOffset != 0 ||
                                                              s_.rightScale != 0 || s_.rightColumnOffset != 0);
         const double flickerWave = flickering_ ? std::sin(2 * CV_PI * s_.flickerFrequencyHz * tUs * 1e-6) : 0.0;
-        const double cr = std::cos(s_.rightRollRad), sr = std::sin(s_.rightRollRad);
-        std::vector<PlanePose> poses;
-        std::vector<PlaneInView> views;
+        const double cr = rollCos_, sr = rollSin_;
+        std::vector<PlanePose>& poses = out.poses;
+        std::vector<PlaneInView>& views = out.views;
+        poses.clear();
+        views.clear();
         for (const SimulatedPlane& p : planes_)
         {
             poses.push_back(pose(p, tUs));
@@ -387,14 +465,7 @@ private:
         {
             for (int x = 0; x < sz.width; x++)
             {
-                Vec3d d((x - cx) / f, (y - cy) / f, 1.0);
-                if (misrectified)
-                {
-                    // Raw pixel -> ideal pixel: undo the offsets, the scale, then the roll.
-                    const double rx = x - cx - s_.rightColumnOffset, ry = y - cy - s_.rightRowOffset;
-                    const double g = f * (1 + s_.rightScale);
-                    d = Vec3d((cr * rx + sr * ry) / g, (-sr * rx + cr * ry) / g, 1.0);
-                }
+                const Vec3d d = rayDirection(camera, x, y);
                 const int i = y * sz.width + x;
                 if (reuseStatic && !movingMayHit(d))
                 {
@@ -404,31 +475,10 @@ private:
                     out.flowY[i] = still.flowY[i];
                     continue;
                 }
-                double best = std::numeric_limits<double>::infinity(), hitA = 0, hitB = 0;
-                int hit = -1;
-                Vec3d point;
-                for (size_t k = 0; k < planes_.size(); k++)
-                {
-                    const PlaneInView& view = views[k];
-                    if (!view.mayHit(d) || (staticOnly && !isStatic(planes_[k])))
-                        continue;
-                    const PlanePose& q = poses[k];
-                    const double denom = q.n.dot(d);
-                    if (std::abs(denom) < 1e-12)
-                        continue;
-                    const double s = view.distance / denom;  // depth along +Z, since d.z = 1
-                    if (s <= 1e-6 || s >= best)
-                        continue;
-                    const Vec3d pt = origin + s * d;
-                    const double a = q.u.dot(pt - q.c), b = q.v.dot(pt - q.c);
-                    if (std::abs(a) > planes_[k].halfSize[0] || std::abs(b) > planes_[k].halfSize[1])
-                        continue;
-                    best = s;
-                    hit = (int)k;
-                    point = pt;
-                    hitA = a;
-                    hitB = b;
-                }
+                const RayHit h = castRay(poses, views, origin, d, staticOnly);
+                const int hit = h.plane;
+                const double best = h.depth;
+                const Vec3d& point = h.point;
                 if (hit < 0)
                 {
                     out.logI[i] = (float)background;
@@ -436,9 +486,7 @@ private:
                     out.flowX[i] = out.flowY[i] = 0;
                     continue;
                 }
-                out.logI[i] = planes_[hit].texture == TEXTURE_UNIFORM
-                                  ? views[hit].uniformLogI
-                                  : (float)std::log(std::max(texture(planes_[hit], poses[hit], hitA, hitB), 1e-4));
+                out.logI[i] = steadyLogIntensity(poses, views, h);
                 if (flickering_ && planes_[hit].flickerDepth > 0)
                 {
                     out.flickerLogI[i] = (float)std::log(1 + planes_[hit].flickerDepth * flickerWave);
@@ -631,7 +679,7 @@ private:
             return g;  // the background: no geometry, no disparity
         g[GT_DEPTH] = (float)z;
         g[GT_DISPARITY] = (float)(s_.focalLength * s_.baseline / z);
-        setNormalFlow(r, ex, ey, r.flowX[i], r.flowY[i], g);
+        setNormalFlow(c, r, ex, ey, r.flowX[i], r.flowY[i], g);
         // Occlusion: is the same scene point the one the other camera sees at its projection?
         const double f = s_.focalLength, cx = 0.5 * (sz.width - 1);
         const double X = (x - cx) / f * z + (c == CAMERA_RIGHT ? s_.baseline : 0.0);
@@ -647,24 +695,114 @@ private:
         return g;
     }
 
-    // Normal flow at pixel (x, y) of render r for an image motion (flowX, flowY) [px/s]: the motion's component
-    // along the log-intensity gradient there (Sobel on the render), and its lifetime.
-    void setNormalFlow(const Render& r, int x, int y, double flowX, double flowY, std::array<float, 6>& g) const
+    // edgeNormal()'s circle: EDGE_RAYS rays, each interval bisected EDGE_BISECTIONS times.
+    enum { EDGE_RAYS = 16, EDGE_BISECTIONS = 5, EDGE_STEPS = EDGE_RAYS << EDGE_BISECTIONS };
+
+    // The direction of the sharp scene's log-intensity gradient around pixel (x, y) of camera c's render r: the
+    // first moment of the log intensity on a circle around the pixel centre. Across a straight edge the brighter
+    // arc is symmetric about the edge's normal whatever the edge's offset from the centre, so the direction is
+    // the contour's, as the events' times along it run. A gradient of the rendered pixels (Sobel) is not: they
+    // sample the edge at the pixel centres, a staircase whose step sits at the pixel that has just fired, which
+    // turns a slanted edge's normal by 15 degrees and more.
+    // The circle is sampled by EDGE_RAYS rays, each change between neighbouring rays located by bisection (to
+    // within 360 / EDGE_STEPS degrees), and the arcs between the changes taken as constant.
+    // A circle of EDGE_RADII[0] reaches an edge through the pixel; the wider one, those that fire the pixel
+    // through the lens blur. False where neither circle meets an edge (or meets a line through its centre).
+    bool edgeNormal(int c, const Render& r, int x, int y, double& nx, double& ny) const
     {
-        const Size sz = s_.resolution;
-        auto L = [&](int xx, int yy) {
-            xx = std::min(std::max(xx, 0), sz.width - 1);
-            yy = std::min(std::max(yy, 0), sz.height - 1);
-            return (double)r.logI[yy * sz.width + xx];
-        };
-        const double gx = (L(x + 1, y - 1) + 2 * L(x + 1, y) + L(x + 1, y + 1)) - (L(x - 1, y - 1) + 2 * L(x - 1, y) + L(x - 1, y + 1));
-        const double gy = (L(x - 1, y + 1) + 2 * L(x, y + 1) + L(x + 1, y + 1)) - (L(x - 1, y - 1) + 2 * L(x, y - 1) + L(x + 1, y - 1));
-        const double gn = std::hypot(gx, gy);
-        double nx = 0, ny = 0;
-        if (gn > 1e-9)
+        static const double EDGE_RADII[2] = { 1.5, 3.0 };
+        const Vec3d origin(c == CAMERA_RIGHT ? s_.baseline : 0.0, 0, 0);
+        for (double radius : EDGE_RADII)
         {
-            nx = gx / gn;
-            ny = gy / gn;
+            // Angle index j: 2 pi j / EDGE_STEPS.
+            const auto logIntensityAt = [&](int j) {
+                const Vec2d& u = circle_[(size_t)(j % EDGE_STEPS)];
+                return (double)steadyLogIntensity(r.poses, r.views,
+                                                  castRay(r.poses, r.views, origin, rayDirection(c, x + radius * u[0], y + radius * u[1])));
+            };
+            const int spacing = 1 << EDGE_BISECTIONS;
+            double value[EDGE_RAYS];
+            for (int k = 0; k < EDGE_RAYS; k++)
+                value[k] = logIntensityAt(k * spacing);
+            // The changes: between ray k and the next, at angle change[k] (none: NaN).
+            double change[EDGE_RAYS];
+            int changes = 0;
+            for (int k = 0; k < EDGE_RAYS; k++)
+            {
+                const double v0 = value[k], v1 = value[(k + 1) % EDGE_RAYS];
+                change[k] = std::numeric_limits<double>::quiet_NaN();
+                if (v0 == v1)
+                    continue;
+                int lo = k * spacing, hi = (k + 1) * spacing;
+                while (hi - lo > 1)
+                {
+                    const int mid = (lo + hi) / 2;
+                    const double v = logIntensityAt(mid);
+                    // A blended texture edge changes gradually: it is where the level is halfway.
+                    (std::abs(v - v0) < std::abs(v - v1) ? lo : hi) = mid;
+                }
+                change[k] = CV_PI * (lo + hi) / EDGE_STEPS;
+                changes++;
+            }
+            if (changes == 0)
+                continue;
+            // Each arc from one change to the next holds its rays' value: its moment is value x the integral of
+            // (cos, sin) over it.
+            double gx = 0, gy = 0;
+            int first = 0;
+            while (std::isnan(change[first]))
+                first++;
+            for (int k = first, n = 0; n < changes; n++)
+            {
+                int next = (k + 1) % EDGE_RAYS;
+                while (std::isnan(change[next]))
+                    next = (next + 1) % EDGE_RAYS;
+                const double a0 = change[k], a1 = change[next] + (next <= k ? 2 * CV_PI : 0.0);
+                const double v = value[(k + 1) % EDGE_RAYS];
+                gx += v * (std::sin(a1) - std::sin(a0));
+                gy += v * (std::cos(a0) - std::cos(a1));
+                k = next;
+            }
+            const double gn = std::hypot(gx, gy);
+            // A moment far below the contrast on the circle: a line through the centre.
+            double lo = value[0], hi = value[0];
+            for (double v : value)
+            {
+                lo = std::min(lo, v);
+                hi = std::max(hi, v);
+            }
+            if (gn > 1e-3 * (hi - lo))
+            {
+                nx = gx / gn;
+                ny = gy / gn;
+                return true;
+            }
+        }
+        return false;
+    }
+
+    // Normal flow at pixel (x, y) of camera c's render r for an image motion (flowX, flowY) [px/s]: the motion's
+    // component along the log-intensity gradient there (edgeNormal(); Sobel on the render where no edge is near),
+    // and its lifetime.
+    void setNormalFlow(int c, const Render& r, int x, int y, double flowX, double flowY, std::array<float, 6>& g) const
+    {
+        double nx = 0, ny = 0;
+        if (!edgeNormal(c, r, x, y, nx, ny))
+        {
+            const Size sz = s_.resolution;
+            auto L = [&](int xx, int yy) {
+                xx = std::min(std::max(xx, 0), sz.width - 1);
+                yy = std::min(std::max(yy, 0), sz.height - 1);
+                return (double)r.logI[yy * sz.width + xx];
+            };
+            const double gx = (L(x + 1, y - 1) + 2 * L(x + 1, y) + L(x + 1, y + 1)) - (L(x - 1, y - 1) + 2 * L(x - 1, y) + L(x - 1, y + 1));
+            const double gy = (L(x - 1, y + 1) + 2 * L(x, y + 1) + L(x + 1, y + 1)) - (L(x - 1, y - 1) + 2 * L(x, y - 1) + L(x + 1, y - 1));
+            const double gn = std::hypot(gx, gy);
+            if (gn > 1e-9)
+            {
+                nx = gx / gn;
+                ny = gy / gn;
+            }
         }
         const double along = flowX * nx + flowY * ny;
         g[GT_FLOW_X] = (float)(along * nx);
@@ -760,6 +898,8 @@ private:
     bool delayed_ = false;
     bool flickering_ = false;  // some plane flickers
     Render cur_[2], next_[2];
+    double rollCos_ = 1, rollSin_ = 0;  // the right camera's roll (rightRollRad)
+    std::vector<Vec2d> circle_;         // (cos, sin) of edgeNormal()'s EDGE_STEPS angles
     Render staticScene_[2];         // each camera's sharp render of the static planes alone (render(staticOnly))
     std::vector<int> movingPlanes_;  // indices of the planes that are not static (isStatic())
     double t_ = 0, delivered_ = 0;
