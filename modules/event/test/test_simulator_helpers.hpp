@@ -68,6 +68,27 @@ inline LeftCameraEvents generateLeftCamera(cv::event::StereoEventSimulator& sim,
     return run;
 }
 
+/** The `fan` scene's blade side edges (in the left camera, clear of the hub, where the two bars cross, and of
+the tips: 6-12 px from the centre): each event's true lifetime over the closed form 1 / (omega sqrt(r^2 - w^2))
+of a side edge r px from the hub and half a blade's width w off its axis, sorted. */
+inline std::vector<double> fanSideEdgeLifetimeRatios(const LeftCameraEvents& run, const cv::event::SimulatorSettings& s)
+{
+    const double omega = 2 * CV_PI * 25, w = 0.012 * s.focalLength / 1.0;
+    const double cx = 0.5 * (s.resolution.width - 1), cy = 0.5 * (s.resolution.height - 1);
+    std::vector<double> ratios;
+    for (size_t k = 0; k < run.events.size(); k++)
+    {
+        const cv::event::Event& e = run.events[k];
+        const float* g = run.groundTruth.ptr<float>(run.truthRows[k]);
+        const double r = std::hypot(e.x - cx, e.y - cy);
+        if (((int)g[cv::event::GT_FLAGS] & cv::event::GT_FLAG_NOISE) || r < 6 || r > 12 || g[cv::event::GT_LIFETIME] <= 0)
+            continue;
+        ratios.push_back(g[cv::event::GT_LIFETIME] * 1e-6 * omega * std::sqrt(r * r - w * w));
+    }
+    std::sort(ratios.begin(), ratios.end());
+    return ratios;
+}
+
 /** LifetimeEstimator's default inlierDistance, for the tests that compare it with other settings. */
 inline double defaultInlierDistance()
 {

@@ -359,6 +359,22 @@ TEST(Event_SimulatorSensor, through_a_lens_blur_the_true_lifetimes_say_when_the_
     EXPECT_GT(check->getRatioQuantile(0.25), 0.8);
 }
 
+TEST(Event_SimulatorSensor, through_a_lens_blur_a_turning_surfaces_true_lifetime_is_its_motion_where_its_contour_passes)
+{
+    // The fan's blades turn in their plane, each point at omega times its distance from the hub. Through a blur
+    // of 0.8 px a pixel fires for a blade up to 3 px away: its truth must be the blade's motion where the edge
+    // passes the pixel, not that of any blade pixel within the blur's reach (up to 3 px nearer the hub or further).
+    Ptr<StereoEventSimulator> base = StereoEventSimulator::create("fan");
+    SimulatorSettings s = base->getSettings();
+    s.blurSigmaPx = 0.8;
+    Ptr<StereoEventSimulator> sim = StereoEventSimulator::create(base->getPlanes(), s);
+    const std::vector<double> ratios = fanSideEdgeLifetimeRatios(generateLeftCamera(*sim, 200000), s);
+    ASSERT_GT(ratios.size(), 1000u);
+    EXPECT_NEAR(1.0, ratios[ratios.size() / 2], 0.02);
+    EXPECT_NEAR(1.0, ratios[ratios.size() / 4], 0.04);
+    EXPECT_NEAR(1.0, ratios[ratios.size() * 3 / 4], 0.04);
+}
+
 TEST(Event_SimulatorSensor, hot_pixels_and_leak_events_at_their_rates)
 {
     SimulatorSettings s = SimulatorSettings::preset(SENSOR_DAVIS240);

@@ -100,6 +100,7 @@ bool earlierEvent(const SimulatedEvent& a, const SimulatedEvent& b)
 struct Render
 {
     std::vector<float> logI, depth, flowX, flowY;
+    std::vector<int> plane;          // the plane each pixel sees (-1: none)
     std::vector<float> flickerLogI;  // with flickering planes: the flicker's share of logI (log of its factor)
     // The planes at the render's time, for the rays the ground truth casts between the pixel centres.
     std::vector<PlanePose> poses;
@@ -437,6 +438,7 @@ private:
         const int n = sz.area();
         out.logI.resize(n);
         out.depth.resize(n);
+        out.plane.resize(n);
         out.flowX.resize(n);
         out.flowY.resize(n);
         if (flickering_)
@@ -471,6 +473,7 @@ private:
                 {
                     out.logI[i] = still.logI[i];
                     out.depth[i] = still.depth[i];
+                    out.plane[i] = still.plane[i];
                     out.flowX[i] = still.flowX[i];
                     out.flowY[i] = still.flowY[i];
                     continue;
@@ -483,6 +486,7 @@ private:
                 {
                     out.logI[i] = (float)background;
                     out.depth[i] = 0;
+                    out.plane[i] = -1;
                     out.flowX[i] = out.flowY[i] = 0;
                     continue;
                 }
@@ -493,6 +497,7 @@ private:
                     out.logI[i] += out.flickerLogI[i];
                 }
                 out.depth[i] = (float)best;
+                out.plane[i] = hit;
                 // Motion of the visible point, projected: u = f X / Z + cx.
                 const SimulatedPlane& p = planes_[hit];
                 const PlanePose& q = poses[hit];
@@ -636,12 +641,14 @@ private:
         if (s_.blurSigmaPx > 0)
         {
             // Through the lens blur a pixel also fires for an edge as far away as the blur reaches: the nearest
-            // surface within that reach caused it, and its depth and motion are the truth. Even the blur's far tail
-            // fires where a pixel's reference level lies just above the surface behind (after one ON event,
-            // two OFF events of half its threshold bring it back exactly there).
+            // surface within that reach caused it, and its depth is the truth. Even the blur's far tail fires where
+            // a pixel's reference level lies just above the surface behind (after one ON event, two OFF events of
+            // half its threshold bring it back exactly there). Its motion is that of the surface's pixel nearest
+            // the event, where its contour passes: a surface that turns, nears or recedes moves differently across
+            // its extent, and its nearest point in depth may lie on the far side of the reach.
             const int reach = blurKernel().width / 2;
             double best = std::numeric_limits<double>::infinity();
-            int bestIndex = i;
+            int bestIndex = i, surface = -1;
             for (int yy = std::max(0, y - reach); yy <= std::min(sz.height - 1, y + reach); yy++)
                 for (int xx = std::max(0, x - reach); xx <= std::min(sz.width - 1, x + reach); xx++)
                     for (const Render* r : { &cur_[c], &next_[c] })
@@ -651,19 +658,30 @@ private:
                         {
                             best = z;
                             bestIndex = yy * sz.width + xx;
+                            surface = r->plane[bestIndex];
                         }
                     }
-            return surfaceTruth(c, bestIndex % sz.width, bestIndex / sz.width, x, y);
+            int motionIndex = bestIndex, closest = std::numeric_limits<int>::max();
+            for (int yy = std::max(0, y - reach); yy <= std::min(sz.height - 1, y + reach); yy++)
+                for (int xx = std::max(0, x - reach); xx <= std::min(sz.width - 1, x + reach); xx++)
+                {
+                    const int j = yy * sz.width + xx, apart = (xx - x) * (xx - x) + (yy - y) * (yy - y);
+                    if (apart < closest && surface >= 0 && (cur_[c].plane[j] == surface || next_[c].plane[j] == surface))
+                    {
+                        closest = apart;
+                        motionIndex = j;
+                    }
+                }
+            return surfaceTruth(c, bestIndex % sz.width, bestIndex / sz.width, x, y, motionIndex);
         }
-        return surfaceTruth(c, x, y, x, y);
+        return surfaceTruth(c, x, y, x, y, y * sz.width + x);
     }
 
     // The truth of the surface seen at pixel (x, y) for an event at pixel (ex, ey): through a lens blur a pixel
-    // fires for a surface up to 4 sigma away. Its depth, disparity and occlusion are the surface's; its normal
-    // flow is the surface's motion along the log-intensity gradient at the event's pixel, as the blurred
-    // pattern that fired there moves with the surface but has its own gradient (near a corner or a limb's end
-    // it turns away from the contour's).
-    std::array<float, 6> surfaceTruth(int c, int x, int y, int ex, int ey) const
+    // fires for a surface up to 4 sigma away. Its depth, disparity and occlusion are the surface's at (x, y); its
+    // normal flow is the surface's motion at pixel motionIndex (where its contour passes nearest the event)
+    // along the edge's normal at the event's pixel (edgeNormal()).
+    std::array<float, 6> surfaceTruth(int c, int x, int y, int ex, int ey, int motionIndex) const
     {
         const Size sz = s_.resolution;
         const int i = y * sz.width + x;
@@ -679,7 +697,10 @@ private:
             return g;  // the background: no geometry, no disparity
         g[GT_DEPTH] = (float)z;
         g[GT_DISPARITY] = (float)(s_.focalLength * s_.baseline / z);
-        setNormalFlow(c, r, ex, ey, r.flowX[i], r.flowY[i], g);
+        // The motion at motionIndex, in the render where that pixel sees this surface.
+        const Render& moving = r.plane[motionIndex] == r.plane[i] ? r : (before ? next_[c] : cur_[c]);
+        const int m = moving.plane[motionIndex] == r.plane[i] ? motionIndex : i;
+        setNormalFlow(c, r, ex, ey, moving.flowX[m], moving.flowY[m], g);
         // Occlusion: is the same scene point the one the other camera sees at its projection?
         const double f = s_.focalLength, cx = 0.5 * (sz.width - 1);
         const double X = (x - cx) / f * z + (c == CAMERA_RIGHT ? s_.baseline : 0.0);
