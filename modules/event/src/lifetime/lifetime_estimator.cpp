@@ -224,6 +224,8 @@ public:
     }
     bool getSkipEarlierEdges() const CV_OVERRIDE { return skipEarlierEdges_; }
     void setSkipEarlierEdges(bool skip) CV_OVERRIDE { skipEarlierEdges_ = skip; }
+    bool getRefitCrossings() const CV_OVERRIDE { return refitCrossings_; }
+    void setRefitCrossings(bool refit) CV_OVERRIDE { refitCrossings_ = refit; }
     int getSeed() const CV_OVERRIDE { return seed_; }
     void setSeed(int s) CV_OVERRIDE { seed_ = s; }
 
@@ -236,7 +238,7 @@ public:
            << "maxIterations" << maxIterations_ << "regularization" << lambda_
            << "predictionTolerance" << predictionTolerance_ << "usePrediction" << (int)usePrediction_
            << "crossingLifetimes" << crossingLifetimes_ << "skipEarlierEdges" << (int)skipEarlierEdges_
-           << "seed" << seed_;
+           << "refitCrossings" << (int)refitCrossings_ << "seed" << seed_;
     }
 
     void read(const FileNode& fn) CV_OVERRIDE
@@ -254,6 +256,7 @@ public:
         setUsePrediction(num("usePrediction", usePrediction_) != 0);
         setCrossingLifetimes(num("crossingLifetimes", crossingLifetimes_));
         setSkipEarlierEdges(num("skipEarlierEdges", skipEarlierEdges_) != 0);
+        setRefitCrossings(num("refitCrossings", refitCrossings_) != 0);
         setSeed((int)num("seed", seed_));
         if (s != size_)
             setSensorSize(s);
@@ -288,8 +291,8 @@ private:
         float quality = 0;
         status = LIFETIME_NOISE;
         // A later event of a crossing in progress is fitted at the crossing's first time, where the edge arrived.
-        const bool continues = continuesCrossing(e, p, idx);
-        const int64 origin = continues ? surface_[idx] : e.t;
+        bool continues = continuesCrossing(e, p, idx);
+        int64 origin = continues ? surface_[idx] : e.t;
         Prediction& pred = predictions_[idx];
         CrossingPlane& crossing = crossings_[idx];
         if (usePrediction_ && pred.valid && std::abs(timeDifference(e.t, pred.t)) <= predictionTolerance_)
@@ -298,6 +301,14 @@ private:
             b = pred.b;
             quality = pred.quality;
             status = LIFETIME_PREDICTED;
+        }
+        else if (!continues && mayContinueCrossing(e, p, idx) &&
+                 fit(e, surface_[idx], p, pred, scratch, a, b, quality) &&
+                 (double)timeDifference(e.t, surface_[idx]) < crossingLifetimes_ * 1000.0 * std::sqrt(a * a + b * b))
+        {
+            continues = true;
+            origin = surface_[idx];
+            status = LIFETIME_FITTED;
         }
         else if (fit(e, origin, p, pred, scratch, a, b, quality))
             status = LIFETIME_FITTED;
@@ -372,6 +383,16 @@ private:
         const Active& last = active_[(size_t)e.y * size_.width + e.x];
         return crossingLifetimes_ > 0 && first != EventSurface::NO_EVENT && last.p == (uchar)p && last.lifetime > 0 &&
                timeDifference(e.t, first) < crossingLifetimes_ * last.lifetime;
+    }
+
+    // With refitCrossings: whether an event that continuesCrossing() does not hold is fitted at its crossing's
+    // first time first, the plane then deciding (see setRefitCrossings()).
+    bool mayContinueCrossing(const Event& e, int p, size_t idx) const
+    {
+        const int64 first = surface_[idx];
+        const Active& last = active_[(size_t)e.y * size_.width + e.x];
+        return refitCrossings_ && crossingLifetimes_ > 0 && first != EventSurface::NO_EVENT && last.p == (uchar)p &&
+               first < e.t && (double)timeDifference(e.t, first) < timeWindow_;
     }
 
     static double positive(double v, const char* what)
@@ -641,6 +662,7 @@ private:
     bool usePrediction_ = true;
     double crossingLifetimes_ = 2.0;
     bool skipEarlierEdges_ = true;
+    bool refitCrossings_ = false;
     int seed_ = 0;
     const PlaneInlierKernels& inlierKernels_ = planeInlierKernelsForThisCpu();
     std::vector<int64> surface_;

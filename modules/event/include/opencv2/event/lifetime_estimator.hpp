@@ -139,6 +139,17 @@ public:
     every timestamp within the time window is fitted, as in Mueggler et al. */
     CV_WRAP virtual bool getSkipEarlierEdges() const = 0;
     CV_WRAP virtual void setSkipEarlierEdges(bool skip) = 0;
+    /** @brief Lets an event continue its pixel's crossing where getCrossingLifetimes() alone would start a new
+    one (default false): the pixel's last event had the event's polarity but no lifetime, or one shorter than
+    the time since the crossing began allows, and the crossing began within the time window. The event is then
+    first fitted with its origin at the crossing's first time; when that plane's lifetime says the edge is still
+    passing (the crossing began less than getCrossingLifetimes() of it before), the event continues the
+    crossing with that plane, else it starts a new crossing and is fitted at its own time. A real sensor's pixel
+    often fires again while the edge passes after its first event got no plane, or a wrong one; starting a
+    crossing there puts the edge late at that pixel, and the planes of the pixels ahead, fitted through it, too
+    flat. Costs a second fit on the events that do start a crossing under this test. */
+    CV_WRAP virtual bool getRefitCrossings() const = 0;
+    CV_WRAP virtual void setRefitCrossings(bool refit) = 0;
     /** @brief Seed of the RANSAC sampling (default 0): results are deterministic. An event's samples are drawn
     from the seed and the event itself (pixel, polarity, time), not from a sequence shared by all events, so
     they do not depend on how many fits ran before it. */

@@ -232,7 +232,8 @@ def test_lifetimes():
     # LifetimeEstimator and LifetimeArrivalCheck: an edge sliding right at 100 px/s (10 ms per pixel) over a
     # 16 x 8 sensor, pixel (x, y) firing at 1 ms + 10 ms x. Its lifetimes are 10 ms, and the check finds the
     # edge reaching the next pixel after one of them; inlierDistance, crossingLifetimes (each pixel fires once:
-    # no crossing to continue) and skipEarlierEdges (one edge: nothing earlier to skip) go through the bindings.
+    # no crossing to continue), skipEarlierEdges (one edge: nothing earlier to skip) and refitCrossings go through the
+    # bindings.
     # Every event lies on the plane, so each lifetime's quality is 1 / (1 + 1 / (n - 2)) for a whole number n of
     # inliers.
     xs, ys = np.meshgrid(np.arange(16, dtype=np.int32), np.arange(8, dtype=np.int32))
@@ -248,6 +249,9 @@ def test_lifetimes():
     assert estimator.getSkipEarlierEdges()
     estimator.setSkipEarlierEdges(False)
     assert not estimator.getSkipEarlierEdges()
+    assert not estimator.getRefitCrossings()
+    estimator.setRefitCrossings(True)
+    assert estimator.getRefitCrossings()
     lifetimes, flow, status, quality = estimator.process(edge)
     assert lifetimes.shape == (128, 1) and flow.shape == (128, 2) and quality.shape == (128, 1)
     fitted = lifetimes.ravel() > 0
