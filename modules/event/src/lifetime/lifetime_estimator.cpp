@@ -224,8 +224,13 @@ public:
     }
     bool getSkipEarlierEdges() const CV_OVERRIDE { return skipEarlierEdges_; }
     void setSkipEarlierEdges(bool skip) CV_OVERRIDE { skipEarlierEdges_ = skip; }
-    bool getRefitCrossings() const CV_OVERRIDE { return refitCrossings_; }
-    void setRefitCrossings(bool refit) CV_OVERRIDE { refitCrossings_ = refit; }
+    double getRefitCrossingLifetimes() const CV_OVERRIDE { return refitCrossingLifetimes_; }
+    void setRefitCrossingLifetimes(double lifetimes) CV_OVERRIDE
+    {
+        if (!(lifetimes >= 0) || !std::isfinite(lifetimes))
+            CV_Error_(Error::StsBadArg, ("LifetimeEstimator: refitCrossingLifetimes %g; must be >= 0 (0: off)", lifetimes));
+        refitCrossingLifetimes_ = lifetimes;
+    }
     int getSeed() const CV_OVERRIDE { return seed_; }
     void setSeed(int s) CV_OVERRIDE { seed_ = s; }
 
@@ -238,7 +243,7 @@ public:
            << "maxIterations" << maxIterations_ << "regularization" << lambda_
            << "predictionTolerance" << predictionTolerance_ << "usePrediction" << (int)usePrediction_
            << "crossingLifetimes" << crossingLifetimes_ << "skipEarlierEdges" << (int)skipEarlierEdges_
-           << "refitCrossings" << (int)refitCrossings_ << "seed" << seed_;
+           << "refitCrossingLifetimes" << refitCrossingLifetimes_ << "seed" << seed_;
     }
 
     void read(const FileNode& fn) CV_OVERRIDE
@@ -256,7 +261,7 @@ public:
         setUsePrediction(num("usePrediction", usePrediction_) != 0);
         setCrossingLifetimes(num("crossingLifetimes", crossingLifetimes_));
         setSkipEarlierEdges(num("skipEarlierEdges", skipEarlierEdges_) != 0);
-        setRefitCrossings(num("refitCrossings", refitCrossings_) != 0);
+        setRefitCrossingLifetimes(num("refitCrossingLifetimes", refitCrossingLifetimes_));
         setSeed((int)num("seed", seed_));
         if (s != size_)
             setSensorSize(s);
@@ -304,7 +309,7 @@ private:
         }
         else if (!continues && mayContinueCrossing(e, p, idx) &&
                  fit(e, surface_[idx], p, pred, scratch, a, b, quality) &&
-                 (double)timeDifference(e.t, surface_[idx]) < crossingLifetimes_ * 1000.0 * std::sqrt(a * a + b * b))
+                 (double)timeDifference(e.t, surface_[idx]) < refitCrossingLifetimes_ * 1000.0 * std::sqrt(a * a + b * b))
         {
             continues = true;
             origin = surface_[idx];
@@ -385,14 +390,21 @@ private:
                timeDifference(e.t, first) < crossingLifetimes_ * last.lifetime;
     }
 
-    // With refitCrossings: whether an event that continuesCrossing() does not hold is fitted at its crossing's
-    // first time first, the plane then deciding (see setRefitCrossings()).
+    // Whether an event that continuesCrossing() does not hold is fitted at its crossing's first time first, that
+    // plane then deciding (see setRefitCrossingLifetimes()). Where the crossing's first events had a plane, the
+    // time since it began must be within refitCrossingLifetimes of that plane's lifetime too: an edge that comes
+    // back sparsely would otherwise be taken for the one before, through a plane fitted to both.
     bool mayContinueCrossing(const Event& e, int p, size_t idx) const
     {
         const int64 first = surface_[idx];
         const Active& last = active_[(size_t)e.y * size_.width + e.x];
-        return refitCrossings_ && crossingLifetimes_ > 0 && first != EventSurface::NO_EVENT && last.p == (uchar)p &&
-               first < e.t && (double)timeDifference(e.t, first) < timeWindow_;
+        if (!(refitCrossingLifetimes_ > 0) || !(crossingLifetimes_ > 0) || first == EventSurface::NO_EVENT ||
+            last.p != (uchar)p || first >= e.t)
+            return false;
+        const double since = (double)timeDifference(e.t, first);
+        const CrossingPlane& crossing = crossings_[idx];
+        const double crossingLifetime = 1000.0 * std::sqrt((double)crossing.a * crossing.a + (double)crossing.b * crossing.b);
+        return since < timeWindow_ && (!crossing.valid || since < refitCrossingLifetimes_ * crossingLifetime);
     }
 
     static double positive(double v, const char* what)
@@ -662,7 +674,7 @@ private:
     bool usePrediction_ = true;
     double crossingLifetimes_ = 2.0;
     bool skipEarlierEdges_ = true;
-    bool refitCrossings_ = false;
+    double refitCrossingLifetimes_ = 4.0;
     int seed_ = 0;
     const PlaneInlierKernels& inlierKernels_ = planeInlierKernelsForThisCpu();
     std::vector<int64> surface_;

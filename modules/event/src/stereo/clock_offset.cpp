@@ -262,9 +262,11 @@ std::vector<Vec2f> ownFlows(const std::vector<Event>& events, Size size)
 {
     Mat lifetimes, flow;
     Ptr<LifetimeEstimator> estimator = LifetimeEstimator::create(size);
-    // Over every timestamp in the window (and the matcher's lifetimes in slopeAt() too): the rules below were
-    // set on these; with the earlier edges left out walking_near (clocks alike) reads +1.65 +- 0.47 ms, applied.
+    // Over every timestamp in the window and with the matcher's crossings (its lifetimes in slopeAt() too): the
+    // rules below were set on these; with the earlier edges left out walking_near (clocks alike) reads +1.65 +-
+    // 0.47 ms, applied.
     estimator->setSkipEarlierEdges(false);
+    estimator->setRefitCrossingLifetimes(0);
     estimator->process(events, lifetimes, flow);
     std::vector<Vec2f> flows(events.size());
     for (size_t i = 0; i < events.size(); i++)

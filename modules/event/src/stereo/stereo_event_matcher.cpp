@@ -20,6 +20,11 @@ StereoEventMatcherImpl::StereoEventMatcherImpl(Size size, int mode)
 {
     estimators_[0] = createRowBandLifetimeEstimator(size);
     estimators_[1] = createRowBandLifetimeEstimator(size);
+    // The crossings as the matching's own settings were chosen on (activeDistance, the lifetime copies and their
+    // confidences): refitted crossings lengthen the lifetimes, and with them every event's time in the
+    // descriptors. getLifetimeEstimator() turns them on.
+    for (const Ptr<RowBandLifetimeEstimator>& estimator : estimators_)
+        estimator->setRefitCrossingLifetimes(0);
     params_.setMode(mode);
     setSensorSize(size);
 }

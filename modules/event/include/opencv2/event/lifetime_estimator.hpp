@@ -26,14 +26,14 @@ enum LifetimeStatus
 /** @brief Per-event lifetime and normal flow by local plane fitting on the Surface of Active Events
 (Mueggler et al. @cite Mueggler2015, with the prediction shortcut of Hadviger et al. @cite Hadviger2019).
 
-For each event, the past events of its polarity in an N x N window no older than dt are taken in local
-coordinates (x, y relative to the event, t relative to the event in ms). The surface holds, per pixel, when an
-edge arrived: a blurred or strong edge fires a pixel several times as it passes, and the later events of such a
-crossing (see getCrossingLifetimes()) keep the first one's time there and are fitted at it. Where the pixel's
-previous crossing says an earlier edge had left the window before this one came, its timestamps are left out
-(see getSkipEarlierEdges()). RANSAC hypotheses are planes t = a x + b y through the current event and two random
-past events (degenerate pairs are skipped); inliers lie within the inlier distance of the edge position the
-plane gives them (in pixels, so in time the threshold is that distance times the plane's time per pixel), and
+For each event, the past events of its polarity in an N x N window no older than dt are taken in local coordinates
+(x, y relative to the event, t relative to the event in ms). The surface holds, per pixel, when an edge arrived: a
+blurred or strong edge fires a pixel several times as it passes, and the later events of such a crossing (see
+getCrossingLifetimes() and getRefitCrossingLifetimes()) keep the first one's time there and are fitted at it.
+Where the pixel's previous crossing says an earlier edge had left the window before this one came, its timestamps
+are left out (see getSkipEarlierEdges()). RANSAC hypotheses are planes t = a x + b y through the current event and
+two random past events (degenerate pairs are skipped); inliers lie within the inlier distance of the edge position
+the plane gives them (in pixels, so in time the threshold is that distance times the plane's time per pixel), and
 within the inlier threshold [ms]; the best hypothesis is accepted with at least minInliers inliers, and refitted
 by least squares on its inliers (t = a x + b y + c), regularised toward the plane predicted for this pixel when
 there is one. No accepted plane within the iteration cap: noise.
@@ -139,17 +139,19 @@ public:
     every timestamp within the time window is fitted, as in Mueggler et al. */
     CV_WRAP virtual bool getSkipEarlierEdges() const = 0;
     CV_WRAP virtual void setSkipEarlierEdges(bool skip) = 0;
-    /** @brief Lets an event continue its pixel's crossing where getCrossingLifetimes() alone would start a new
-    one (default false): the pixel's last event had the event's polarity but no lifetime, or one shorter than
-    the time since the crossing began allows, and the crossing began within the time window. The event is then
-    first fitted with its origin at the crossing's first time; when that plane's lifetime says the edge is still
-    passing (the crossing began less than getCrossingLifetimes() of it before), the event continues the
-    crossing with that plane, else it starts a new crossing and is fitted at its own time. A real sensor's pixel
-    often fires again while the edge passes after its first event got no plane, or a wrong one; starting a
-    crossing there puts the edge late at that pixel, and the planes of the pixels ahead, fitted through it, too
-    flat. Costs a second fit on the events that do start a crossing under this test. */
-    CV_WRAP virtual bool getRefitCrossings() const = 0;
-    CV_WRAP virtual void setRefitCrossings(bool refit) = 0;
+    /** @brief How long a crossing may last, in lifetimes of a plane fitted at its first time, where
+    getCrossingLifetimes() alone would start a new one (default 4; 0: off). When the pixel's last event had the
+    event's polarity but no lifetime, or one too short for the time since the crossing began, and the crossing began
+    within the time window (and within this many lifetimes of its first events' plane, where they had one), the
+    event is first fitted with its origin at the crossing's first time; it continues the crossing with that plane
+    when the crossing began less than this many of the plane's lifetimes before, else it starts a new crossing and
+    is fitted at its own time. An edge whose contrast spans several thresholds, blurred over a pixel or more, fires
+    each pixel a train of events over a few lifetimes, and the train's first events often get no plane, or one too
+    flat, as its neighbours have not all fired yet; starting a crossing at a later event puts the edge late at that
+    pixel, and the planes of the pixels ahead, fitted through it, come out too flat. A second fit on the events that
+    still start a crossing. Off where getCrossingLifetimes() is 0. */
+    CV_WRAP virtual double getRefitCrossingLifetimes() const = 0;
+    CV_WRAP virtual void setRefitCrossingLifetimes(double lifetimes) = 0;
     /** @brief Seed of the RANSAC sampling (default 0): results are deterministic. An event's samples are drawn
     from the seed and the event itself (pixel, polarity, time), not from a sequence shared by all events, so
     they do not depend on how many fits ran before it. */

@@ -232,7 +232,7 @@ def test_lifetimes():
     # LifetimeEstimator and LifetimeArrivalCheck: an edge sliding right at 100 px/s (10 ms per pixel) over a
     # 16 x 8 sensor, pixel (x, y) firing at 1 ms + 10 ms x. Its lifetimes are 10 ms, and the check finds the
     # edge reaching the next pixel after one of them; inlierDistance, crossingLifetimes (each pixel fires once:
-    # no crossing to continue), skipEarlierEdges (one edge: nothing earlier to skip) and refitCrossings go through the
+    # no crossing to continue), skipEarlierEdges (one edge: nothing earlier to skip) and refitCrossingLifetimes go through the
     # bindings.
     # Every event lies on the plane, so each lifetime's quality is 1 / (1 + 1 / (n - 2)) for a whole number n of
     # inliers.
@@ -249,9 +249,9 @@ def test_lifetimes():
     assert estimator.getSkipEarlierEdges()
     estimator.setSkipEarlierEdges(False)
     assert not estimator.getSkipEarlierEdges()
-    assert not estimator.getRefitCrossings()
-    estimator.setRefitCrossings(True)
-    assert estimator.getRefitCrossings()
+    assert estimator.getRefitCrossingLifetimes() == 4.0
+    estimator.setRefitCrossingLifetimes(6.0)
+    assert estimator.getRefitCrossingLifetimes() == 6.0
     lifetimes, flow, status, quality = estimator.process(edge)
     assert lifetimes.shape == (128, 1) and flow.shape == (128, 2) and quality.shape == (128, 1)
     fitted = lifetimes.ravel() > 0
