@@ -189,6 +189,10 @@ expect doc/lifetime.md "median $(halfFiring 1 "timeWindow 100 ms") times the clo
 expect doc/lifetime.md "and $(halfFiring 2 "timeWindow 100 ms") times at 1 ms/px" "design_figures --figures=bars: half-firing bars at 1 ms/px, 100 ms window"
 expect doc/lifetime.md "$(halfFiring 1 "8 px of travel") and $(halfFiring 2 "8 px of travel") times the closed form" \
   "design_figures --figures=bars: half-firing bars, 8 px of travel"
+# The slowing pendulum's table (design_figures --figures=slowing), row by row.
+for row in "\`pendulum\`, as built" "\`pendulum\`, as TUM" "\`pendulum_patterned\`, as built" "\`pendulum_patterned\`, as TUM"; do
+  expect doc/lifetime.md "$(grep -F -- "| $row" "$work/design.txt")" "design_figures --figures=slowing: $row"
+done
 
 if [ ! -d "$tum" ]; then
   # The real recordings' figures need them; the simulated ones above are checked (a failure there is one).

@@ -184,12 +184,7 @@ public:
     double getInlierThreshold() const CV_OVERRIDE { return inlierThreshold_; }
     void setInlierThreshold(double ms) CV_OVERRIDE { inlierThreshold_ = positive(ms, "inlier threshold"); }
     double getInlierDistance() const CV_OVERRIDE { return inlierDistance_; }
-    void setInlierDistance(double px) CV_OVERRIDE
-    {
-        if (!(px >= 0) || !std::isfinite(px))
-            CV_Error_(Error::StsBadArg, ("LifetimeEstimator: inlierDistance %g px; must be >= 0 (0: off)", px));
-        inlierDistance_ = px;
-    }
+    void setInlierDistance(double px) CV_OVERRIDE { inlierDistance_ = zeroOrPositive(px, "inlierDistance [px]"); }
     int getMinInliers() const CV_OVERRIDE { return minInliers_; }
     void setMinInliers(int n) CV_OVERRIDE
     {
@@ -218,18 +213,14 @@ public:
     double getCrossingLifetimes() const CV_OVERRIDE { return crossingLifetimes_; }
     void setCrossingLifetimes(double lifetimes) CV_OVERRIDE
     {
-        if (!(lifetimes >= 0) || !std::isfinite(lifetimes))
-            CV_Error_(Error::StsBadArg, ("LifetimeEstimator: crossingLifetimes %g; must be >= 0 (0: off)", lifetimes));
-        crossingLifetimes_ = lifetimes;
+        crossingLifetimes_ = zeroOrPositive(lifetimes, "crossingLifetimes");
     }
     bool getSkipEarlierEdges() const CV_OVERRIDE { return skipEarlierEdges_; }
     void setSkipEarlierEdges(bool skip) CV_OVERRIDE { skipEarlierEdges_ = skip; }
     double getRefitCrossingLifetimes() const CV_OVERRIDE { return refitCrossingLifetimes_; }
     void setRefitCrossingLifetimes(double lifetimes) CV_OVERRIDE
     {
-        if (!(lifetimes >= 0) || !std::isfinite(lifetimes))
-            CV_Error_(Error::StsBadArg, ("LifetimeEstimator: refitCrossingLifetimes %g; must be >= 0 (0: off)", lifetimes));
-        refitCrossingLifetimes_ = lifetimes;
+        refitCrossingLifetimes_ = zeroOrPositive(lifetimes, "refitCrossingLifetimes");
     }
     int getSeed() const CV_OVERRIDE { return seed_; }
     void setSeed(int s) CV_OVERRIDE { seed_ = s; }
@@ -309,7 +300,7 @@ private:
         }
         else if (!continues && mayContinueCrossing(e, p, idx) &&
                  fit(e, surface_[idx], p, pred, scratch, a, b, quality) &&
-                 (double)timeDifference(e.t, surface_[idx]) < refitCrossingLifetimes_ * 1000.0 * std::sqrt(a * a + b * b))
+                 (double)timeDifference(e.t, surface_[idx]) < refitCrossingLifetimes_ * planeLifetimeUs(a, b))
         {
             continues = true;
             origin = surface_[idx];
@@ -353,7 +344,7 @@ private:
         }
         else if (plane)
         {
-            lifetime = (float)(1000.0 * std::sqrt(g2));  // |g| ms -> us
+            lifetime = (float)planeLifetimeUs(a, b);  // |g| ms -> us
             flow = Vec2f((float)(1000.0 * a / g2), (float)(1000.0 * b / g2));  // g / |g|^2 px/ms -> px/s
             predictNeighbour(e, origin, p, a, b, quality);
         }
@@ -403,8 +394,8 @@ private:
             return false;
         const double since = (double)timeDifference(e.t, first);
         const CrossingPlane& crossing = crossings_[idx];
-        const double crossingLifetime = 1000.0 * std::sqrt((double)crossing.a * crossing.a + (double)crossing.b * crossing.b);
-        return since < timeWindow_ && (!crossing.valid || since < refitCrossingLifetimes_ * crossingLifetime);
+        return since < timeWindow_ &&
+               (!crossing.valid || since < refitCrossingLifetimes_ * planeLifetimeUs(crossing.a, crossing.b));
     }
 
     static double positive(double v, const char* what)
@@ -413,6 +404,17 @@ private:
             CV_Error_(Error::StsBadArg, ("LifetimeEstimator: %s %g; must be > 0", what, v));
         return v;
     }
+
+    // For settings where 0 switches a rule off.
+    static double zeroOrPositive(double v, const char* what)
+    {
+        if (!(v >= 0) || !std::isfinite(v))
+            CV_Error_(Error::StsBadArg, ("LifetimeEstimator: %s %g; must be >= 0 and finite (0: off)", what, v));
+        return v;
+    }
+
+    // The lifetime [us] of the time-surface plane t = a x + b y [ms/px]: the time its edge takes to move one pixel.
+    static double planeLifetimeUs(double a, double b) { return 1000.0 * std::sqrt(a * a + b * b); }
 
     void checkInside(const Event& e) const
     {
@@ -461,8 +463,7 @@ private:
         if (!skipEarlierEdges_ || origin != e.t || previous == EventSurface::NO_EVENT || previous >= e.t ||
             !plane.valid)
             return none;
-        const double crossingUs = (window_ / 2) * std::sqrt(2.0) * 1000.0 *
-                                  std::sqrt((double)plane.a * plane.a + (double)plane.b * plane.b);
+        const double crossingUs = (window_ / 2) * std::sqrt(2.0) * planeLifetimeUs(plane.a, plane.b);
         if (!((double)(e.t - previous) > 2 * crossingUs))
             return none;
         return previous + 1 + (int64)crossingUs;
