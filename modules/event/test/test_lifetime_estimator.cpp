@@ -296,9 +296,9 @@ TEST(Event_Lifetime, simulated_moving_line_lifetimes_against_ground_truth)
     EXPECT_GT((double)with / left.size(), 0.90);      // >= 90 % of signal events get a lifetime
 }
 
-// A bright bar (log contrast 1.4 over the wall) sliding at 40 px/s, turned by an angle, seen through a lens blur
-// by an otherwise ideal sensor with a low threshold: each pixel fires a train of 5-14 events over a few lifetimes
-// as an edge passes. The median of the estimated lifetimes over the simulator's truth.
+// A bright bar 8 px wide (log contrast ln 4 over the wall) sliding at 40 px/s, turned by an angle, seen through a
+// lens blur by an otherwise ideal sensor with a low threshold: each pixel fires a train of 5-14 events over a few
+// lifetimes as an edge passes. The median of the estimated lifetimes over the simulator's truth.
 double blurredTrainLifetimeRatio(double angleDeg, double blurPx, double threshold, double refitCrossingLifetimes)
 {
     SimulatorSettings s;
@@ -306,18 +306,8 @@ double blurredTrainLifetimeRatio(double angleDeg, double blurPx, double threshol
     s.focalLength = 120;
     s.blurSigmaPx = blurPx;
     s.thresholdOn = s.thresholdOff = threshold;
-    SimulatedPlane wall;
-    wall.center = Vec3d(0, 0, 3);
-    wall.halfSize = Vec2d(5, 5);
-    wall.intensity = 0.2;
-    wall.texture = TEXTURE_UNIFORM;
-    SimulatedPlane bar = wall;
-    bar.center = Vec3d(-0.2, 0, 1.5);
-    bar.halfSize = Vec2d(0.05, 0.4);
-    bar.intensity = 0.8;
-    bar.rotation = Vec3d(0, 0, angleDeg * CV_PI / 180);
-    bar.velocity = Vec3d(0.5, 0, 0);
-    Ptr<StereoEventSimulator> sim = StereoEventSimulator::create(std::vector<SimulatedPlane>{ wall, bar }, s);
+    Ptr<StereoEventSimulator> sim = StereoEventSimulator::create(
+        barsOnAWall(s.focalLength, { -16 }, Vec2d(4, 32), std::log(4.0), angleDeg * CV_PI / 180, 40), s);
     const LeftCameraEvents run = generateLeftCamera(*sim, 800000);
     Ptr<LifetimeEstimator> est = LifetimeEstimator::create(s.resolution);
     est->setRefitCrossingLifetimes(refitCrossingLifetimes);
@@ -332,8 +322,7 @@ double blurredTrainLifetimeRatio(double angleDeg, double blurPx, double threshol
     }
     if (ratios.size() < 1000)
         return 0;
-    std::nth_element(ratios.begin(), ratios.begin() + ratios.size() / 2, ratios.end());
-    return ratios[ratios.size() / 2];
+    return median(ratios);
 }
 
 TEST(Event_Lifetime, a_blurred_edge_that_fires_trains_of_events_gets_its_true_lifetime)

@@ -95,6 +95,34 @@ inline double defaultInlierDistance()
     return cv::event::LifetimeEstimator::create()->getInlierDistance();
 }
 
+/** A plain wall (intensity 0.2, 3 m away) and, 1 m away, bright bars of log contrast @p logContrast over it,
+each @p halfSizePx (half width, half height [px]) about its centre, turned in the image by @p angleRad, with
+centres @p centresPx px right of the optical axis at t = 0 (on its row), all sliding right at @p speed px/s, for
+a camera of focal length @p focalLength [px]. */
+inline std::vector<cv::event::SimulatedPlane> barsOnAWall(double focalLength, const std::vector<double>& centresPx,
+                                                          cv::Vec2d halfSizePx, double logContrast, double angleRad,
+                                                          double speed)
+{
+    using namespace cv::event;
+    const double px = 1.0 / focalLength;  // metres per pixel at 1 m
+    std::vector<SimulatedPlane> planes(1);
+    planes[0].center = cv::Vec3d(0, 0, 3);
+    planes[0].halfSize = cv::Vec2d(2, 2);
+    planes[0].texture = TEXTURE_UNIFORM;
+    planes[0].intensity = 0.2;
+    for (double x : centresPx)
+    {
+        SimulatedPlane bar = planes[0];
+        bar.center = cv::Vec3d(x * px, 0, 1);
+        bar.halfSize = halfSizePx * px;
+        bar.rotation = cv::Vec3d(0, 0, angleRad);
+        bar.intensity = 0.2 * std::exp(logContrast);
+        bar.velocity = cv::Vec3d(speed * px, 0, 0);
+        planes.push_back(bar);
+    }
+    return planes;
+}
+
 /** Bright vertical bars, 4 px wide and 12 px apart, 1 m away, sliding right at @p speed px/s over a plain wall,
 seen by the realistic scenes' sensor (boxes: threshold spread, 0.5 ms refractory period, latency and jitter,
 noise) on a 64 x 32 crop, through a LifetimeEstimator with @p inlierDistance, @p timeWindowUs,
@@ -109,23 +137,12 @@ inline std::pair<double, double> barsLifetimeRatio(double speed, double logContr
     SimulatorSettings s = StereoEventSimulator::create("boxes")->getSettings();
     s.resolution = cv::Size(64, 32);
     s.blurSigmaPx = blurPx;
-    const double px = 1.0 / s.focalLength;  // metres per pixel at 1 m
-    std::vector<SimulatedPlane> planes(1);
-    planes[0].center = cv::Vec3d(0, 0, 3);
-    planes[0].halfSize = cv::Vec2d(2, 2);
-    planes[0].texture = TEXTURE_UNIFORM;
-    planes[0].intensity = 0.2;
     const double travel = 100;  // px
+    std::vector<double> centres;
     for (double x = -32 - travel - 12; x < 32 + 12; x += 12)
-    {
-        SimulatedPlane bar = planes[0];
-        bar.center = cv::Vec3d(x * px, 0, 1);
-        bar.halfSize = cv::Vec2d(2 * px, 40 * px);
-        bar.intensity = 0.2 * std::exp(logContrast);
-        bar.velocity = cv::Vec3d(speed * px, 0, 0);
-        planes.push_back(bar);
-    }
-    cv::Ptr<StereoEventSimulator> sim = StereoEventSimulator::create(planes, s);
+        centres.push_back(x);
+    cv::Ptr<StereoEventSimulator> sim =
+        StereoEventSimulator::create(barsOnAWall(s.focalLength, centres, cv::Vec2d(2, 40), logContrast, 0, speed), s);
     cv::Ptr<LifetimeEstimator> est = LifetimeEstimator::create(s.resolution);
     est->setInlierDistance(inlierDistance);
     est->setTimeWindow(timeWindowUs);

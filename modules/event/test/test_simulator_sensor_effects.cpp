@@ -500,6 +500,33 @@ TEST(Event_SimulatorSensor, imperfect_rectification_moves_the_right_cameras_rows
     }
 }
 
+TEST(Event_SimulatorSensor, the_right_cameras_true_flow_is_the_ideal_one_turned_and_stretched_as_its_grid_is)
+{
+    // sweepingEdge(): a vertical edge 1 m away moving right at 0.4 m/s, f 0.4 px/s on the ideal grid. The right
+    // camera's grid rolled by 0.05 rad and scaled by 1.05 sees it move 1.05 times as fast, turned by the roll.
+    SimulatorSettings s = idealSmallSensor();
+    s.rightRollRad = 0.05;
+    s.rightScale = 0.05;
+    Ptr<StereoEventSimulator> sim = StereoEventSimulator::create(sweepingEdge(), s);
+    std::vector<Event> ev;
+    Mat gt;
+    sim->generate(150000, ev, gt);
+    const double speed = s.focalLength * 0.4;
+    int counted[2] = { 0, 0 };
+    for (size_t i = 0; i < ev.size(); i++)
+    {
+        const int c = ev[i].camera;
+        const float fx = gt.at<float>((int)i, GT_FLOW_X), fy = gt.at<float>((int)i, GT_FLOW_Y);
+        const double expected = c == CAMERA_RIGHT ? 1.05 * speed : speed, angle = c == CAMERA_RIGHT ? 0.05 : 0.0;
+        ASSERT_NEAR(expected, std::hypot(fx, fy), 0.01 * expected) << "camera " << c << ", event " << i;
+        ASSERT_NEAR(angle, std::atan2(fy, fx), 0.015) << "camera " << c << ", event " << i;  // within 0.9 degrees
+        ASSERT_NEAR(1e6 / expected, gt.at<float>((int)i, GT_LIFETIME), 0.01 * 1e6 / expected) << "camera " << c;
+        counted[c]++;
+    }
+    EXPECT_GT(counted[0], 500);
+    EXPECT_GT(counted[1], 500);
+}
+
 TEST(Event_SimulatorSensor, swinging_plane_moves_as_its_pivot_and_swing_rate_say)
 {
     // A bar hanging from a pivot, swinging about the optical axis: its ground-truth flow at the lower end is

@@ -358,8 +358,7 @@ private:
     {
         const Size sz = s_.resolution;
         const double f = s_.focalLength, cx = 0.5 * (sz.width - 1), cy = 0.5 * (sz.height - 1);
-        if (camera == CAMERA_RIGHT && (s_.rightRollRad != 0 || s_.rightRowOffset != 0 || s_.rightScale != 0 ||
-                                       s_.rightColumnOffset != 0))
+        if (misrectified(camera))
         {
             // Raw pixel -> ideal pixel: undo the offsets, the scale, then the roll.
             const double cr = rollCos_, sr = rollSin_;
@@ -368,6 +367,14 @@ private:
             return Vec3d((cr * rx + sr * ry) / g, (-sr * rx + cr * ry) / g, 1.0);
         }
         return Vec3d((x - cx) / f, (y - cy) / f, 1.0);
+    }
+
+    // Whether @p camera's pixel grid is off the ideal rectified one (the right camera's rightRollRad, rightScale,
+    // rightColumnOffset, rightRowOffset).
+    bool misrectified(int camera) const
+    {
+        return camera == CAMERA_RIGHT &&
+               (s_.rightRollRad != 0 || s_.rightRowOffset != 0 || s_.rightScale != 0 || s_.rightColumnOffset != 0);
     }
 
     // The nearest of the planes (posed as in @p poses) that the ray from @p origin along @p d hits.
@@ -420,10 +427,7 @@ private:
         const Size sz = s_.resolution;
         const double f = s_.focalLength;
         const Vec3d origin(camera == CAMERA_RIGHT ? s_.baseline : 0.0, 0, 0);
-        // The right camera's pixel grid against the ideal rectified one (rightRollRad, rightScale, rightColumnOffset,
-        // rightRowOffset).
-        const bool misrectified = camera == CAMERA_RIGHT && (s_.rightRollRad != 0 || s_.rightRowOffset != 0 ||
-                                                             s_.rightScale != 0 || s_.rightColumnOffset != 0);
+        const bool offGrid = misrectified(camera);
         const double flickerWave = flickering_ ? std::sin(2 * CV_PI * s_.flickerFrequencyHz * tUs * 1e-6) : 0.0;
         const double cr = rollCos_, sr = rollSin_;
         std::vector<PlanePose>& poses = out.poses;
@@ -506,12 +510,13 @@ private:
                 const Vec3d rel = point - origin;
                 out.flowX[i] = (float)(f * (vel[0] * rel[2] - rel[0] * vel[2]) / (rel[2] * rel[2]));
                 out.flowY[i] = (float)(f * (vel[1] * rel[2] - rel[1] * vel[2]) / (rel[2] * rel[2]));
-                if (misrectified)
+                if (offGrid)
                 {
-                    // Ideal image motion -> the raw grid's (the roll turns it; the offset does not move it).
-                    const float fx = out.flowX[i], fy = out.flowY[i];
-                    out.flowX[i] = (float)(cr * fx - sr * fy);
-                    out.flowY[i] = (float)(sr * fx + cr * fy);
+                    // Ideal image motion -> the raw grid's (the roll turns it, the scale stretches it; the offsets
+                    // do not move it).
+                    const double fx = out.flowX[i], fy = out.flowY[i], g = 1 + s_.rightScale;
+                    out.flowX[i] = (float)(g * (cr * fx - sr * fy));
+                    out.flowY[i] = (float)(g * (sr * fx + cr * fy));
                 }
             }
         }

@@ -126,9 +126,10 @@ struct CV_EXPORTS SimulatorSettings
     centre, scaled about it by 1 + rightScale (its focal length calibrated that much off) and shifted by
     rightColumnOffset and rightRowOffset [px] (its principal point off) against the ideal rectified camera, so a
     point at ideal pixel (u, v) is seen at (1 + rightScale) R(roll) (u - cx, v - cy) + (cx + rightColumnOffset,
-    cy + rightRowOffset). The ground-truth disparity stays the ideal f B / Z: the column offset and the scale
-    move what the right camera sees along the rows, so a match against it is off the truth by -rightColumnOffset
-    - rightScale (u - d - cx) px, which no matcher can tell from the scene's own depth. */
+    cy + rightRowOffset). Its events' true flow and lifetime are the motion on that grid (turned and stretched
+    alike). The ground-truth disparity stays the ideal f B / Z: the column offset and the scale move what the
+    right camera sees along the rows, so a match against it is off the truth by -rightColumnOffset - rightScale
+    (u - d - cx) px, which no matcher can tell from the scene's own depth. */
     double rightRowOffset = 0;
     double rightRollRad = 0;           //!< @copydoc rightRowOffset
     double rightScale = 0;             //!< @copydoc rightRowOffset
