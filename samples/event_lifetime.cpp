@@ -6,7 +6,8 @@
 //                  [--min-quality=Q]
 //
 // Pictures DIR/active_NNNNN.png: left, the events alive at that instant (each lives from its timestamp for
-// its lifetime: the sharp edge image); right, all events of the last --frame-ms (the fixed window).
+// its lifetime: the sharp edge image; with --min-quality only those of at least that quality); right, all
+// events of the last --frame-ms (the fixed window).
 // --csv writes every event: t,x,y,p,lifetime_us,vx,vy,status,quality (status: 0 noise, 1 fitted, 2 predicted;
 // quality: how far the lifetime can be trusted, LifetimeEstimator::process()).
 // Without FILE it simulates the "moving_line" scene. Progress bar on stderr. At the end it prints the
@@ -46,7 +47,7 @@ const char* const keys =
     "{one-based     | false           | text recordings count pixels from 1}"
     "{no-prediction | false           | fit a plane for every event (no prediction shortcut)}"
     "{set           |                 | estimator parameters NAME=VALUE, comma separated (FileStorage names, e.g. inlierDistance=0,windowSize=7)}"
-    "{min-quality   | 0               | the lifetime check only over lifetimes of at least this quality (0..1; 0: all)}";
+    "{min-quality   | 0               | the lifetime check and the active events' picture only over lifetimes of at least this quality (0..1; 0: all)}";
 
 }  // namespace
 
@@ -145,14 +146,16 @@ int main(int argc, char** argv)
                 recent.pop_front();
             // Picture: active events | fixed window, same colours (ON white, OFF grey).
             Mat active, fixed = Mat::zeros(size, CV_8U), pair;
-            est->renderActiveEvents(now, active);
+            est->renderActiveEvents(now, active, minQuality);
             for (const Event& e : recent)
                 fixed.at<uchar>(e.y, e.x) = e.p ? 255 : 128;
             hconcat(active, fixed, pair);
             pair = sampleEnlarge(pair, zoom);
             cvtColor(pair, pair, COLOR_GRAY2BGR);
             line(pair, Point(size.width * zoom, 0), Point(size.width * zoom, size.height * zoom), Scalar(0, 160, 255), 1);
-            putText(pair, "active events (lifetime)", Point(6, 16), FONT_HERSHEY_SIMPLEX, 0.45, Scalar(0, 160, 255), 1);
+            const String activeTitle = minQuality > 0 ? format("active events, quality >= %g", minQuality)
+                                                      : String("active events (lifetime)");
+            putText(pair, activeTitle, Point(6, 16), FONT_HERSHEY_SIMPLEX, 0.45, Scalar(0, 160, 255), 1);
             putText(pair, format("fixed %.0f ms window", frameMs), Point(size.width * zoom + 6, 16), FONT_HERSHEY_SIMPLEX,
                     0.45, Scalar(0, 160, 255), 1);
             char name[64];

@@ -149,4 +149,40 @@ TEST(Event_LifetimeQuality, ranks_the_lifetimes_by_their_error_against_the_simul
     }
 }
 
+// The active events' picture at a quality threshold holds exactly the pixels whose latest event is alive and
+// has a lifetime of at least that quality, as process() gave them.
+TEST(Event_LifetimeQuality, the_active_events_picture_keeps_the_lifetimes_of_the_quality_asked_for)
+{
+    Ptr<StereoEventSimulator> sim = StereoEventSimulator::create("cluttered");
+    const Size size = sim->getSensorSize();
+    const LeftCameraEvents run = generateLeftCamera(*sim, 300000);
+    Ptr<LifetimeEstimator> est = LifetimeEstimator::create(size);
+    const QualityRun q = runQuality(est, run.events);
+    const double t = (double)run.events.back().t;
+    int drawn[2] = { 0, 0 };
+    const double thresholds[2] = { 0, 0.75 };
+    for (int k = 0; k < 2; k++)
+    {
+        Mat expected = Mat::zeros(size, CV_8U);
+        for (size_t i = 0; i < run.events.size(); i++)
+        {
+            const Event& e = run.events[i];
+            const float lifetime = q.lifetimes.at<float>((int)i);
+            const bool alive = lifetime > 0 && q.quality.at<float>((int)i) >= thresholds[k] && (double)e.t <= t &&
+                               t < (double)e.t + lifetime;
+            expected.at<uchar>(e.y, e.x) = alive ? (e.p ? 255 : 128) : 0;  // the pixel's latest event decides
+        }
+        Mat image;
+        est->renderActiveEvents(t, image, thresholds[k]);
+        ASSERT_EQ(size, image.size());
+        EXPECT_EQ(0, cvtest::norm(expected, image, NORM_INF)) << "minQuality " << thresholds[k];
+        drawn[k] = countNonZero(image);
+    }
+    EXPECT_GT(drawn[1], 100);
+    EXPECT_LT(drawn[1], drawn[0]);
+    Mat image;
+    EXPECT_THROW(est->renderActiveEvents(t, image, 1.5), cv::Exception);
+    EXPECT_THROW(est->renderActiveEvents(t, image, -0.1), cv::Exception);
+}
+
 }}  // namespace

@@ -119,17 +119,20 @@ public:
         Active& act = active_[(size_t)e.y * size_.width + e.x];
         act.t = e.t;
         act.lifetime = std::max(lifetime, 0.f);
+        act.quality = 0;
         act.p = (uchar)p;
     }
 
-    void renderActiveEvents(double t, OutputArray image) const CV_OVERRIDE
+    void renderActiveEvents(double t, OutputArray image, double minQuality) const CV_OVERRIDE
     {
+        if (!(minQuality >= 0 && minQuality <= 1))
+            CV_Error_(Error::StsBadArg, ("LifetimeEstimator::renderActiveEvents: minQuality %g; must be 0..1", minQuality));
         image.create(size_, CV_8U);
         Mat_<uchar> img = image.getMat();
         for (int i = 0; i < size_.area(); i++)
         {
             const Active& a = active_[i];
-            const bool alive = a.lifetime > 0 && a.t <= t && t < (double)a.t + a.lifetime;
+            const bool alive = a.lifetime > 0 && a.quality >= minQuality && a.t <= t && t < (double)a.t + a.lifetime;
             img(i) = alive ? (a.p ? 255 : 128) : 0;
         }
     }
@@ -358,6 +361,7 @@ private:
         Active& act = active_[(size_t)e.y * size_.width + e.x];
         act.t = e.t;
         act.lifetime = lifetime;
+        act.quality = quality;
         act.p = (uchar)p;
         return lifetime;
     }
@@ -366,6 +370,7 @@ private:
     {
         int64 t = 0;
         float lifetime = 0;
+        float quality = 0;  // as process() gives it
         uchar p = 0;
     };
 

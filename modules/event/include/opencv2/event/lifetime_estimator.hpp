@@ -80,8 +80,13 @@ public:
     virtual void insertEvent(const Event& event, float lifetime, const Vec2f& flow) = 0;
 
     /** @brief Image of the events alive at time @p t: an event lives from its timestamp to timestamp +
-    lifetime; one per pixel (the latest). CV_8U, 255 = alive ON, 128 = alive OFF, 0 = nothing. */
-    CV_WRAP virtual void renderActiveEvents(double t, OutputArray image) const = 0;
+    lifetime; one per pixel (the latest). CV_8U, 255 = alive ON, 128 = alive OFF, 0 = nothing.
+    @param t the instant [us].
+    @param image output.
+    @param minQuality only the events whose lifetime has at least this quality (0..1, as process() gives it;
+    0: all) are drawn; a pixel whose latest event has less is drawn as nothing. Lifetimes passed on by
+    insertEvent() have quality 0. */
+    CV_WRAP virtual void renderActiveEvents(double t, OutputArray image, double minQuality = 0) const = 0;
 
     /** @brief Forgets every event and prediction. */
     CV_WRAP virtual void reset() = 0;

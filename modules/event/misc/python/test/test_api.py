@@ -259,6 +259,13 @@ def test_lifetimes():
     q = quality.ravel()
     inliers = 2 + q[fitted] / (1 - q[fitted])
     assert np.all(q[~fitted] == 0) and np.all(q[fitted] > 0) and np.allclose(inliers, np.round(inliers), atol=0.05), q
+    # At the last event's time the last column is alive; a quality threshold above every lifetime's draws
+    # nothing, one at the lowest draws them all.
+    t = 1000.0 + 10000.0 * 15
+    alive = estimator.renderActiveEvents(t)
+    assert np.count_nonzero(alive) > 0
+    assert np.array_equal(estimator.renderActiveEvents(t, minQuality=float(q[fitted].min())), alive)
+    assert np.count_nonzero(estimator.renderActiveEvents(t, minQuality=min(1.0, float(q.max()) + 1e-6))) == 0
     check = ev.LifetimeArrivalCheck_create((16, 8))
     check.update(edge, lifetimes, flow)
     assert check.getSampleCount() > 50 and abs(check.getRatioQuantile(0.5) - 1.0) < 0.02, check.getRatioQuantile(0.5)
