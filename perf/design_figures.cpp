@@ -243,16 +243,15 @@ int main(int argc, char** argv)
         }
         else if (name == "slowing")
         {
-            std::printf("\n| on a DVS128 | events with a lifetime | our median lifetime | ours / truth, median | by "
-                        "quarter of the true lifetimes, fastest first | at quality >= 0.75 / below | arrival check, ours | of the "
-                        "true lifetimes |\n|---|---|---|---|---|---|---|---|\n");
+            std::printf("\n| on a DVS128 | events with a lifetime | our median lifetime | ours / truth, median "
+                        "| by quarter of the true lifetimes, fastest first | at quality >= 0.75 / below "
+                        "| arrival check, ours | of the true lifetimes |\n|---|---|---|---|---|---|---|---|\n");
             printSlowing();
         }
         else
         {
             std::fprintf(stderr, "design_figures: unknown figure \"%s\" (prior, beyond_view, start_up, bars, "
-                         "slowing)\n",
-                         name.c_str());
+                         "slowing)\n", name.c_str());
             return 2;
         }
         std::fflush(stdout);

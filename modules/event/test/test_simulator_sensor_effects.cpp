@@ -502,8 +502,8 @@ TEST(Event_SimulatorSensor, imperfect_rectification_moves_the_right_cameras_rows
 
 TEST(Event_SimulatorSensor, the_right_cameras_true_flow_is_the_ideal_one_turned_and_stretched_as_its_grid_is)
 {
-    // sweepingEdge(): a vertical edge 1 m away moving right at 0.4 m/s, f 0.4 px/s on the ideal grid. The right
-    // camera's grid rolled by 0.05 rad and scaled by 1.05 sees it move 1.05 times as fast, turned by the roll.
+    // sweepingEdge(): a vertical edge 1 m away moving right at 0.4 m/s, f x 0.4 px/s on the ideal grid. The
+    // right camera's grid, rolled by 0.05 rad and scaled by 1.05, sees it move 1.05 times as fast, turned by the roll.
     SimulatorSettings s = idealSmallSensor();
     s.rightRollRad = 0.05;
     s.rightScale = 0.05;
