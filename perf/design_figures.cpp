@@ -36,6 +36,7 @@ using opencv_test::barsLifetimeRatio;
 using opencv_test::defaultInlierDistance;
 using opencv_test::generateLeftCamera;
 using opencv_test::LeftCameraEvents;
+using opencv_test::perfectLifetimes;
 
 namespace {
 
@@ -166,16 +167,14 @@ void printSlowing()
             const LeftCameraEvents run = generateLeftCamera(*sim, recordingLike ? 7e6 : 3.5e6);
             Mat lifetimes, flow, status, quality;
             LifetimeEstimator::create(s.resolution)->process(run.events, lifetimes, flow, status, quality);
-            Mat trueLifetimes((int)run.events.size(), 1, CV_32F), trueFlow((int)run.events.size(), 2, CV_32F);
+            Mat trueLifetimes, trueFlow;
+            perfectLifetimes(run.groundTruth, run.truthRows, trueLifetimes, trueFlow);
             std::vector<std::pair<float, double>> truthAndRatio;  // per event with both lifetimes
             std::vector<double> ours, trusted, doubtful;  // ours / truth at quality >= 0.75 and below
             for (int k = 0; k < (int)run.events.size(); k++)
             {
                 const float* g = run.groundTruth.ptr<float>(run.truthRows[k]);
                 const bool noise = ((int)g[GT_FLAGS] & GT_FLAG_NOISE) != 0;
-                trueLifetimes.at<float>(k) = noise ? 0.f : g[GT_LIFETIME];
-                trueFlow.at<float>(k, 0) = noise ? 0.f : g[GT_FLOW_X];
-                trueFlow.at<float>(k, 1) = noise ? 0.f : g[GT_FLOW_Y];
                 const float l = lifetimes.at<float>(k);
                 if (l > 0)
                     ours.push_back(l);

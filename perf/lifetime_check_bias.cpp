@@ -9,6 +9,7 @@
 // everywhere; what it gives is what an estimator can at best score on recordings of that kind.
 
 #include "command_line.hpp"
+#include "test_simulator_helpers.hpp"  // perfectLifetimes, shared with the unit tests and design_figures
 
 #include <opencv2/event.hpp>
 
@@ -20,6 +21,7 @@
 
 using namespace cv;
 using namespace cv::event;
+using opencv_test::perfectLifetimes;
 
 namespace {
 
@@ -53,25 +55,23 @@ Result check(const Ptr<StereoEventSimulator>& sim, double durationUs)
 {
     Ptr<LifetimeArrivalCheck> arrival = LifetimeArrivalCheck::create(sim->getSensorSize());
     std::vector<Event> packet, left;
+    std::vector<int> rows;
     Mat truth, lifetimes, flow;
     for (double t = 10000; t <= durationUs; t += 10000)
     {
         sim->generate(t, packet, truth);
         left.clear();
-        std::vector<float> lt, fl;
+        rows.clear();
         for (size_t i = 0; i < packet.size(); i++)
             if (packet[i].camera == CAMERA_LEFT)
             {
-                const float* g = truth.ptr<float>((int)i);
-                const bool noise = ((int)g[GT_FLAGS] & GT_FLAG_NOISE) != 0;
                 left.push_back(packet[i]);
-                lt.push_back(noise ? 0.f : g[GT_LIFETIME]);
-                fl.push_back(noise ? 0.f : g[GT_FLOW_X]);
-                fl.push_back(noise ? 0.f : g[GT_FLOW_Y]);
+                rows.push_back((int)i);
             }
         if (left.empty())
             continue;
-        arrival->update(left, Mat(lt), Mat((int)left.size(), 2, CV_32F, fl.data()));
+        perfectLifetimes(truth, rows, lifetimes, flow);
+        arrival->update(left, lifetimes, flow);
     }
     Result r;
     r.samples = arrival->getSampleCount();

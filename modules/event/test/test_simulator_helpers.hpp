@@ -68,6 +68,24 @@ inline LeftCameraEvents generateLeftCamera(cv::event::StereoEventSimulator& sim,
     return run;
 }
 
+/** A perfect estimator's outputs for events whose ground truth is row rows[k] of @p groundTruth: each one's true
+lifetime [us] and normal flow [px/s] (N x 1 and N x 2 CV_32F), 0 for noise (no edge: a perfect estimator finds
+no plane there). */
+inline void perfectLifetimes(const cv::Mat& groundTruth, const std::vector<int>& rows, cv::Mat& lifetimes, cv::Mat& flow)
+{
+    const int n = (int)rows.size();
+    lifetimes.create(n, 1, CV_32F);
+    flow.create(n, 2, CV_32F);
+    for (int k = 0; k < n; k++)
+    {
+        const float* g = groundTruth.ptr<float>(rows[(size_t)k]);
+        const bool noise = ((int)g[cv::event::GT_FLAGS] & cv::event::GT_FLAG_NOISE) != 0;
+        lifetimes.at<float>(k) = noise ? 0.f : g[cv::event::GT_LIFETIME];
+        flow.at<float>(k, 0) = noise ? 0.f : g[cv::event::GT_FLOW_X];
+        flow.at<float>(k, 1) = noise ? 0.f : g[cv::event::GT_FLOW_Y];
+    }
+}
+
 /** The `fan` scene's blade side edges (in the left camera, clear of the hub, where the two bars cross, and of
 the tips: 6-12 px from the centre): each event's true lifetime over the closed form 1 / (omega sqrt(r^2 - w^2))
 of a side edge r px from the hub and half a blade's width w off its axis, sorted. */

@@ -342,16 +342,8 @@ TEST(Event_SimulatorSensor, through_a_lens_blur_the_true_lifetimes_say_when_the_
     s.leakRateHz = 0;
     Ptr<StereoEventSimulator> sim = StereoEventSimulator::create(base->getPlanes(), s);
     const LeftCameraEvents run = generateLeftCamera(*sim, 1000000);
-    const int n = (int)run.events.size();
-    Mat lifetimes(n, 1, CV_32F), flow(n, 2, CV_32F);
-    for (int k = 0; k < n; k++)
-    {
-        const float* g = run.groundTruth.ptr<float>(run.truthRows[(size_t)k]);
-        const bool noise = ((int)g[GT_FLAGS] & GT_FLAG_NOISE) != 0;
-        lifetimes.at<float>(k) = noise ? 0.f : g[GT_LIFETIME];
-        flow.at<float>(k, 0) = noise ? 0.f : g[GT_FLOW_X];
-        flow.at<float>(k, 1) = noise ? 0.f : g[GT_FLOW_Y];
-    }
+    Mat lifetimes, flow;
+    perfectLifetimes(run.groundTruth, run.truthRows, lifetimes, flow);
     Ptr<LifetimeArrivalCheck> check = LifetimeArrivalCheck::create(sim->getSensorSize());
     check->update(run.events, lifetimes, flow);
     ASSERT_GT(check->getSampleCount(), 3000);
