@@ -3,13 +3,15 @@
 //
 //   event_lifetime [FILE | --scene=NAME] [--camera=0|1] [--frame-ms=10] [--every-ms=50] [--csv=FILE]
 //                  [--output=DIR] [--sensor=WxH|NAME] [--one-based] [--no-prediction] [--max-ms=T] [--set=NAME=VALUE,...]
-//                  [--min-quality=Q]
+//                  [--min-quality=Q] [--filter=NAME [--filter-set=NAME=VALUE,...]]
 //
 // Pictures DIR/active_NNNNN.png: left, the events alive at that instant (each lives from its timestamp for
 // its lifetime: the sharp edge image; with --min-quality only those of at least that quality); right, all
 // events of the last --frame-ms (the fixed window).
 // --csv writes every event: t,x,y,p,lifetime_us,vx,vy,status,quality (status: 0 noise, 1 fitted, 2 predicted;
-// quality: how far the lifetime can be trusted, LifetimeEstimator::process()).
+// quality: how far the lifetime can be trusted, LifetimeEstimator::process()). With --filter the estimator,
+// the CSV, the pictures and the check see only the events the filter keeps (a flickering lamp's, noise's and
+// hot pixels' removed first).
 // Without FILE it simulates the "moving_line" scene. Progress bar on stderr. At the end it prints the
 // LifetimeArrivalCheck: how many lifetimes the edges really took to reach the next pixel (about 1 when the
 // lifetimes agree with the recording; no ground truth needed), over the lifetimes of at least --min-quality.
@@ -24,6 +26,7 @@
 #include "sample_pictures.hpp"
 #include "sample_progress.hpp"
 
+#include <algorithm>
 #include <cstdio>
 #include <deque>
 #include <iostream>
@@ -47,7 +50,9 @@ const char* const keys =
     "{one-based     | false           | text recordings count pixels from 1}"
     "{no-prediction | false           | fit a plane for every event (no prediction shortcut)}"
     "{set           |                 | estimator parameters NAME=VALUE, comma separated (FileStorage names, e.g. inlierDistance=0,windowSize=7)}"
-    "{min-quality   | 0               | the lifetime check and the active events' picture only over lifetimes of at least this quality (0..1; 0: all)}";
+    "{min-quality   | 0               | the lifetime check and the active events' picture only over lifetimes of at least this quality (0..1; 0: all)}"
+    "{filter        |                 | a noise filter in front of the estimator: background_activity, trail, refractory, hot_pixels, anti_flicker}"
+    "{filter-set    |                 | filter parameters NAME=VALUE, comma separated (e.g. minCycles=3)}";
 
 }  // namespace
 
@@ -95,6 +100,10 @@ int main(int argc, char** argv)
         Ptr<LifetimeArrivalCheck> check = LifetimeArrivalCheck::create(size);  // the lifetimes against the recording
         est->setUsePrediction(prediction);
         applyAlgorithmSettings(est, cmd.get<std::string>("set"), "--set", "lifetime estimator");
+        const std::string filterName = cmd.get<std::string>("filter");
+        Ptr<EventFilter> filter = createSampleFilter(filterName, cmd.get<std::string>("filter-set"), size);
+        std::vector<uchar> keepMask;
+        int64 read = 0;  // events of the chosen camera before the filter
         std::FILE* csv = nullptr;
         if (!csvPath.empty())
         {
@@ -117,13 +126,17 @@ int main(int argc, char** argv)
         while (cap.read(packet))
         {
             touchesZero = touchesZero || touchesColumnOrRowZero(packet);
+            if (cap.get(EVENT_CAP_PROP_STEREO) != 0)
+                packet.erase(std::remove_if(packet.begin(), packet.end(), [camera](const Event& e) { return e.camera != camera; }),
+                             packet.end());
+            read += (int64)packet.size();
+            if (filter)
+                filter->filter(packet, packet, keepMask);
             checked.clear();
             checkedLifetimes.clear();
             checkedFlow.clear();
             for (const Event& e : packet)
             {
-                if (cap.get(EVENT_CAP_PROP_STEREO) != 0 && e.camera != camera)
-                    continue;
                 Vec2f flow;
                 int status;
                 float quality;
@@ -174,6 +187,9 @@ int main(int argc, char** argv)
         std::cout << processed << " events of camera " << camera << ": " << fitted << " fitted, " << predicted
                   << " predicted (shortcut), " << noise << " noise; " << pictures << " pictures in " << output
                   << "; " << processed / std::max(1e-9, secs) / 1e6 << " Mev/s including I/O and pictures\n";
+        if (filter)
+            std::cout << format("filter %s: kept %lld of %lld events (%.1f %%)\n", filterName.c_str(), (long long)processed,
+                                (long long)read, 100.0 * processed / std::max<int64>(1, read));
         const int64 outside = (int64)cap.get(EVENT_CAP_PROP_REJECTED_OUTSIDE);
         if (outside > 0)
             std::cerr << "event_lifetime: warning: "

@@ -318,6 +318,16 @@ for entry in "format_samples/aestream_davis346.aedat4::DAVIS346 sample (aestream
   expect doc/lifetime.md "| $qualityLabel | $kept % | $(arrival "$shared/$file" $extra --min-quality=0.75) |" \
     "event_lifetime $file $extra --min-quality=0.75: lifetimes kept, the lifetime check"
 done
+# The check before and after the anti-flicker filter (doc/lifetime.md, "A flickering light"): the events kept and
+# the check over them.
+for entry in "--scene=boxes_flicker:simulated \`boxes_flicker\` (\`--scene=boxes_flicker\`: \`boxes\` lit at 100 Hz)" \
+             "$shared/format_samples/aestream_davis346.aedat4:DAVIS346 sample (aestream)"; do
+  IFS=: read -r source label <<< "$entry"
+  kept=$("$samples/event_lifetime" "$source" --filter=anti_flicker --output="$work/lifetime" 2> /dev/null \
+    | sed -n 's/^filter anti_flicker: kept [0-9]* of [0-9]* events (\([0-9.]*\) %)$/\1/p')
+  expect doc/lifetime.md "| $label | $(arrival "$source") | $kept % | $(arrival "$source" --filter=anti_flicker) |" \
+    "event_lifetime $source, without and with --filter=anti_flicker: the lifetime check, the events kept"
+done
 # The same check on the realistic scenes simulated on a DVS128 (the table's last rows).
 for entry in "walking:simulated \`walking\` on a DVS128 (\`--scene=walking --sensor=DVS128\`)" \
              "boxes:simulated \`boxes\` on a DVS128" "walking_near:simulated \`walking_near\` on a DVS128" \
