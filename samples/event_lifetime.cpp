@@ -103,7 +103,7 @@ int main(int argc, char** argv)
         const std::string filterName = cmd.get<std::string>("filter");
         Ptr<EventFilter> filter = createSampleFilter(filterName, cmd.get<std::string>("filter-set"), size);
         std::vector<uchar> keepMask;
-        int64 read = 0;  // events of the chosen camera before the filter
+        int64 delivered = 0;  // events of the chosen camera before the filter
         std::FILE* csv = nullptr;
         if (!csvPath.empty())
         {
@@ -129,7 +129,7 @@ int main(int argc, char** argv)
             if (cap.get(EVENT_CAP_PROP_STEREO) != 0)
                 packet.erase(std::remove_if(packet.begin(), packet.end(), [camera](const Event& e) { return e.camera != camera; }),
                              packet.end());
-            read += (int64)packet.size();
+            delivered += (int64)packet.size();
             if (filter)
                 filter->filter(packet, packet, keepMask);
             checked.clear();
@@ -189,7 +189,7 @@ int main(int argc, char** argv)
                   << "; " << processed / std::max(1e-9, secs) / 1e6 << " Mev/s including I/O and pictures\n";
         if (filter)
             std::cout << format("filter %s: kept %lld of %lld events (%.1f %%)\n", filterName.c_str(), (long long)processed,
-                                (long long)read, 100.0 * processed / std::max<int64>(1, read));
+                                (long long)delivered, 100.0 * processed / std::max<int64>(1, delivered));
         const int64 outside = (int64)cap.get(EVENT_CAP_PROP_REJECTED_OUTSIDE);
         if (outside > 0)
             std::cerr << "event_lifetime: warning: "
