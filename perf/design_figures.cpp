@@ -173,15 +173,13 @@ void printSlowing()
             std::vector<double> ours, trusted, doubtful;  // ours / truth at quality >= 0.75 and below
             for (int k = 0; k < (int)run.events.size(); k++)
             {
-                const float* g = run.groundTruth.ptr<float>(run.truthRows[k]);
-                const bool noise = ((int)g[GT_FLAGS] & GT_FLAG_NOISE) != 0;
-                const float l = lifetimes.at<float>(k);
+                const float l = lifetimes.at<float>(k), truth = trueLifetimes.at<float>(k);  // truth 0: noise
                 if (l > 0)
                     ours.push_back(l);
-                if (l > 0 && !noise && g[GT_LIFETIME] > 0)
+                if (l > 0 && truth > 0)
                 {
-                    truthAndRatio.push_back(std::make_pair(g[GT_LIFETIME], l / g[GT_LIFETIME]));
-                    (quality.at<float>(k) >= 0.75f ? trusted : doubtful).push_back(l / g[GT_LIFETIME]);
+                    truthAndRatio.push_back(std::make_pair(truth, l / truth));
+                    (quality.at<float>(k) >= 0.75f ? trusted : doubtful).push_back(l / truth);
                 }
             }
             std::sort(truthAndRatio.begin(), truthAndRatio.end());

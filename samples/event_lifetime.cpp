@@ -102,7 +102,6 @@ int main(int argc, char** argv)
         applyAlgorithmSettings(est, cmd.get<std::string>("set"), "--set", "lifetime estimator");
         const std::string filterName = cmd.get<std::string>("filter");
         Ptr<EventFilter> filter = createSampleFilter(filterName, cmd.get<std::string>("filter-set"), size);
-        std::vector<uchar> keepMask;
         int64 delivered = 0;  // events of the chosen camera before the filter
         std::FILE* csv = nullptr;
         if (!csvPath.empty())
@@ -131,7 +130,7 @@ int main(int argc, char** argv)
                              packet.end());
             delivered += (int64)packet.size();
             if (filter)
-                filter->filter(packet, packet, keepMask);
+                filter->filter(packet, packet);
             checked.clear();
             checkedLifetimes.clear();
             checkedFlow.clear();
