@@ -18,14 +18,19 @@ Size twoPlanesWindows(std::vector<Event>& warmUp, std::vector<Event>& window)
     return sim->getSensorSize();
 }
 
-typedef TestBaseWithParam<int> Event_StereoMatcher_Window;
+// Per mode at the defaults, then COUPLED with the cost windows on every other and every third row
+// (setCostRowStep).
+typedef TestBaseWithParam<tuple<int, int>> Event_StereoMatcher_Window;
 
 PERF_TEST_P(Event_StereoMatcher_Window, two_planes,
-            testing::Values((int)STEREO_COUPLED, (int)STEREO_DECOUPLED, (int)STEREO_FIXED_INTERVAL))
+            testing::Values(make_tuple((int)STEREO_COUPLED, 1), make_tuple((int)STEREO_DECOUPLED, 1),
+                            make_tuple((int)STEREO_FIXED_INTERVAL, 1), make_tuple((int)STEREO_COUPLED, 2),
+                            make_tuple((int)STEREO_COUPLED, 3)))
 {
     std::vector<Event> warmUp, window;
     const Size size = twoPlanesWindows(warmUp, window);
-    Ptr<StereoEventMatcher> m = StereoEventMatcher::create(size, GetParam());
+    Ptr<StereoEventMatcher> m = StereoEventMatcher::create(size, get<0>(GetParam()));
+    m->setCostRowStep(get<1>(GetParam()));
     Mat disparity, lifetime;
     TEST_CYCLE()
     {

@@ -459,6 +459,8 @@ TEST(StereoEventMatcher, bad_input_raises_errors_that_name_the_event)
     EXPECT_THROW(m->setCostWindow(4), cv::Exception);
     EXPECT_THROW(m->setLifetimeWindow(4), cv::Exception);
     EXPECT_THROW(m->setLifetimeWindow(33), cv::Exception);
+    EXPECT_THROW(m->setCostRowStep(0), cv::Exception);
+    EXPECT_THROW(m->setCostRowStep(5), cv::Exception);
     EXPECT_THROW(m->setMode(7), cv::Exception);
     EXPECT_THROW(m->setActiveDistance(0), cv::Exception);
     EXPECT_THROW(m->setActiveDistance(std::numeric_limits<double>::quiet_NaN()), cv::Exception);
@@ -491,6 +493,7 @@ TEST(StereoEventMatcher, parameters_round_trip_through_FileStorage)
     a->setCostWindow(7);
     a->setLifetimeWindow(5);
     a->setAggregationWindow(13);
+    a->setCostRowStep(3);
     a->setUniquenessRatio(30);
     a->setMinConfidence(0.4);
     a->setMatchedLifetimeConfidence(0.6);
@@ -522,6 +525,7 @@ TEST(StereoEventMatcher, parameters_round_trip_through_FileStorage)
     EXPECT_EQ(b->getCostWindow(), 7);
     EXPECT_EQ(b->getLifetimeWindow(), 5);
     EXPECT_EQ(b->getAggregationWindow(), 13);
+    EXPECT_EQ(b->getCostRowStep(), 3);
     EXPECT_EQ(b->getUniquenessRatio(), 30);
     EXPECT_EQ(b->getMinConfidence(), 0.4);
     EXPECT_EQ(b->getMatchedLifetimeConfidence(), 0.6);

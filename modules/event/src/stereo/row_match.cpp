@@ -17,19 +17,23 @@ namespace detail {
 unsigned StereoEventMatcherImpl::addRect(const ZouDescriptorMap& self, const ZouDescriptorMap& other, Point r, int x0, int x1, int y0, int y1,
                  MatchScratch& s) const
 {
-    if (!clipToImage(r, x0, x1, y0, y1))
+    if (!clipToImage(r, x0, x1, y0, y1) || !sampleRows(y0, y1))
         return 0;
+    const int k = params_.costRowStep;
     // Candidate i's rectangle is this one shifted by its disparity along the row: offsets[i] bytes.
     return rectSadBatch_(self.descriptor(r.x + x0, r.y + y0), other.descriptor(r.x + x0, r.y + y0),
-                         self.descriptorRowStep(), other.descriptorRowStep(), s.offsets.data(),
-                         s.count, x1 - x0 + 1, y1 - y0 + 1, s.cost.data());
+                         k * self.descriptorRowStep(), k * other.descriptorRowStep(), s.offsets.data(),
+                         s.count, x1 - x0 + 1, (y1 - y0) / k + 1, s.cost.data());
 }
 
 unsigned StereoEventMatcherImpl::rectMass(const ZouDescriptorMap& map, Point q, int x0, int x1, int y0, int y1) const
 {
+    if (!sampleRows(y0, y1))
+        return 0;
+    const int k = params_.costRowStep;
     // The batch kernel without candidates: it returns the rectangle's mass alone.
-    return rectSadBatch_(map.descriptor(q.x + x0, q.y + y0), nullptr, map.descriptorRowStep(), 0, nullptr, 0,
-                         x1 - x0 + 1, y1 - y0 + 1, nullptr);
+    return rectSadBatch_(map.descriptor(q.x + x0, q.y + y0), nullptr, k * map.descriptorRowStep(), 0, nullptr, 0,
+                         x1 - x0 + 1, (y1 - y0) / k + 1, nullptr);
 }
 
 namespace {
@@ -105,8 +109,9 @@ const unsigned* StereoEventMatcherImpl::scoreSeenColumns(const ZouDescriptorMap&
     unsigned* const columnMass = s.columnMass.data();
     const auto massOfColumn = [&](int j, int ya, int yb) {
         unsigned sum = 0;
-        for (int y = ya; y <= yb; y++)
-            sum += descriptorMass(self.descriptor(r.x + j, r.y + y));
+        if (sampleRows(ya, yb))
+            for (int y = ya; y <= yb; y += params_.costRowStep)
+                sum += descriptorMass(self.descriptor(r.x + j, r.y + y));
         return sum;
     };
     int px0 = 0, px1 = -1, py0 = 0, py1 = -1;  // the previous window, empty when there is none

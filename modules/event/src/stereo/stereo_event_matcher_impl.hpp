@@ -108,6 +108,8 @@ public:
     void setLifetimeWindow(int w) CV_OVERRIDE { params_.setLifetimeWindow(w); reset(); }
     int getAggregationWindow() const CV_OVERRIDE { return params_.aggregationWindow; }
     void setAggregationWindow(int a) CV_OVERRIDE { params_.setAggregationWindow(a); reset(); }
+    int getCostRowStep() const CV_OVERRIDE { return params_.costRowStep; }
+    void setCostRowStep(int k) CV_OVERRIDE { params_.setCostRowStep(k); }
     int getUniquenessRatio() const CV_OVERRIDE { return params_.uniquenessRatio; }
     void setUniquenessRatio(int u) CV_OVERRIDE { params_.setUniquenessRatio(u); }
     double getMinConfidence() const CV_OVERRIDE { return params_.minConfidence; }
@@ -207,8 +209,8 @@ private:
     int bandConflictRows() const { return rowWriteReach() + eventRowReach(); }
 
     // ---- matching along the row (row_match.cpp)
-    // Adds the SAD over the rectangle [x0, x1] x [y0, y1] (relative to the event) to every candidate's cost;
-    // returns the same sum against an empty map (the event's side alone).
+    // Adds the SAD over the rectangle [x0, x1] x [y0, y1] (relative to the event; its rows sampled by
+    // sampleRows()) to every candidate's cost; returns the same sum against an empty map (the event's side alone).
     unsigned addRect(const ZouDescriptorMap& self, const ZouDescriptorMap& other, Point r, int x0, int x1, int y0, int y1,
                      MatchScratch& s) const;
 
@@ -225,7 +227,18 @@ private:
         return x0 <= x1 && y0 <= y1;
     }
 
-    // Sum of the descriptor values over [x0, x1] x [y0, y1] relative to q: the cost of matching against nothing.
+    // Narrows the window rows [y0, y1] (offsets from the event's row) to those the cost windows read: the multiples
+    // of params_.costRowStep. False when none is left.
+    bool sampleRows(int& y0, int& y1) const
+    {
+        const int k = params_.costRowStep;
+        y0 = y0 >= 0 ? (y0 + k - 1) / k * k : -(-y0 / k * k);
+        y1 = y1 >= 0 ? y1 / k * k : -((-y1 + k - 1) / k * k);
+        return y0 <= y1;
+    }
+
+    // Sum of the descriptor values over [x0, x1] x [y0, y1] relative to q, rows sampled as addRect() samples them:
+    // the cost of matching against nothing.
     unsigned rectMass(const ZouDescriptorMap& map, Point q, int x0, int x1, int y0, int y1) const;
 
     // Matches the event at r (camera c, polarity p, time t) along its row: the best candidate and its confidence.

@@ -109,6 +109,14 @@ void StereoMatcherParams::setAggregationWindow(int a)
     aggregationWindow = oddWindow(a, costWindow, 31, "aggregation window (>= the cost window)");
 }
 
+void StereoMatcherParams::setCostRowStep(int k)
+{
+    if (k < 1 || k > (int)MAX_COST_ROW_STEP)
+        CV_Error_(Error::StsBadArg, ("StereoEventMatcher: cost row step %d; must be 1..%d (1: every row of the cost "
+                                     "windows)", k, (int)MAX_COST_ROW_STEP));
+    costRowStep = k;
+}
+
 void StereoMatcherParams::setUniquenessRatio(int u)
 {
     if (u < 0 || u > 99)
@@ -217,7 +225,7 @@ void StereoMatcherParams::write(FileStorage& fs) const
     fs << "mode" << getStereoModeName(mode) << "sensorWidth" << sensorSize.width << "sensorHeight" << sensorSize.height
        << "minDisparity" << minDisparity << "maxDisparity" << maxDisparity << "descriptorWindow" << descriptorWindow
        << "maxVectorLength" << maxVectorLength << "costWindow" << costWindow << "lifetimeWindow" << lifetimeWindow
-       << "aggregationWindow" << aggregationWindow << "uniquenessRatio" << uniquenessRatio
+       << "aggregationWindow" << aggregationWindow << "costRowStep" << costRowStep << "uniquenessRatio" << uniquenessRatio
        << "minConfidence" << minConfidence << "matchedLifetimeConfidence" << matchedLifetimeConfidence
        << "lifetimeCopyConfidence" << lifetimeCopyConfidence << "maxLifetimeCopies" << maxLifetimeCopies
        << "priorTolerance" << priorTolerance << "recencyWeight" << recencyWeight << "recencyTime" << (double)recencyTime
@@ -245,6 +253,7 @@ void StereoMatcherParams::read(const FileNode& fn)
     setCostWindow((int)num("costWindow", costWindow));
     setLifetimeWindow((int)num("lifetimeWindow", lifetimeWindow));
     setAggregationWindow((int)num("aggregationWindow", aggregationWindow));
+    setCostRowStep((int)num("costRowStep", costRowStep));
     setUniquenessRatio((int)num("uniquenessRatio", uniquenessRatio));
     setMinConfidence(num("minConfidence", minConfidence));
     setMatchedLifetimeConfidence(num("matchedLifetimeConfidence", matchedLifetimeConfidence));

@@ -27,6 +27,7 @@ struct StereoMatcherParams
     Size sensorSize;
     int minDisparity = 0, maxDisparity = 40;
     int descriptorWindow = 3, maxVectorLength = 3, costWindow = 17, lifetimeWindow = 9, aggregationWindow = 31;
+    int costRowStep = 1;
     int uniquenessRatio = 15;
     double minConfidence = 0, matchedLifetimeConfidence = 0.15, lifetimeCopyConfidence = 0.3;
     int maxLifetimeCopies = 1;
@@ -43,6 +44,8 @@ struct StereoMatcherParams
     enum { MAX_AVERAGING_RADIUS = 5 };
     /** The widest filling radius: the temporal prior's reach along a horizontal edge. */
     enum { MAX_FILL_RADIUS = 30 };
+    /** The sparsest sampling of the cost windows' rows: every 4th row still reads 5 of the default window's 17. */
+    enum { MAX_COST_ROW_STEP = 4 };
 
     void setMode(int m);
     void setSensorSize(Size s);
@@ -54,6 +57,7 @@ struct StereoMatcherParams
     void setLifetimeWindow(int w);
     /** At least the cost window. */
     void setAggregationWindow(int a);
+    void setCostRowStep(int k);
     void setUniquenessRatio(int u);
     void setMinConfidence(double c);
     void setMatchedLifetimeConfidence(double c);
