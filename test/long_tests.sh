@@ -4,8 +4,8 @@
 # long_accuracy_tests: accuracy figures on long simulated runs (5-65 s each in Release, 6-16 times that under
 # the sanitizers). Their code paths are taken by shorter tests: the row bands' scenes, process() against
 # processEvent(), the look-ahead and border closed forms, the filling on 400 ms of a pair, the clock estimate's
-# one-line scene, the lifetime quality's closed forms, the averaging's output-only test and the realistic scenes
-# the samples run.
+# one-line scene, the lifetime quality's closed forms, the averaging's output-only test, the cost row step's
+# event-by-event test and the realistic scenes the samples run.
 long_accuracy_tests='StereoEventMatcher.coupled_beats_frame_sgbm_on_textured_scenes'
 long_accuracy_tests+=':StereoEventMatcher.lifetime_modes_estimate_as_many_events_as_fixed_interval_from_the_start'
 long_accuracy_tests+=':StereoEventMatcher.textured_scenes_meet_the_accuracy_and_density_targets'
@@ -24,6 +24,7 @@ long_accuracy_tests+=':StereoEventMatcher_Filling.puts_the_events_one_camera_mis
 long_accuracy_tests+=':Event_LifetimeQuality.ranks_the_lifetimes_by_their_error_against_the_simulated_truth'
 long_accuracy_tests+=':StereoEventMatcher_Averaging.brings_a_pairs_estimates_to_within_a_pixel_of_the_truth'
 long_accuracy_tests+=':StereoEventMatcher.subpixel_disparities_are_not_pulled_towards_whole_pixels'
+long_accuracy_tests+=':StereoEventMatcher_CostRowStep.every_other_row_matches_as_well_as_every_row'
 
 # row_band_cases: the row bands against one thread, scene x mode case N (0-5; 3 is cluttered COUPLED, the one
 # that takes every path of the bands). The bands' code is the same in every mode; every mode on one and two

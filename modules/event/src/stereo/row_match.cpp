@@ -17,23 +17,26 @@ namespace detail {
 unsigned StereoEventMatcherImpl::addRect(const ZouDescriptorMap& self, const ZouDescriptorMap& other, Point r, int x0, int x1, int y0, int y1,
                  MatchScratch& s) const
 {
-    if (!clipToImage(r, x0, x1, y0, y1) || !sampleRows(y0, y1))
+    if (!clipToImage(r, x0, x1, y0, y1))
         return 0;
-    const int k = params_.costRowStep;
+    const int rows = sampleRows(y0, y1);
+    if (rows == 0)
+        return 0;
+    const size_t k = (size_t)params_.costRowStep;
     // Candidate i's rectangle is this one shifted by its disparity along the row: offsets[i] bytes.
     return rectSadBatch_(self.descriptor(r.x + x0, r.y + y0), other.descriptor(r.x + x0, r.y + y0),
                          k * self.descriptorRowStep(), k * other.descriptorRowStep(), s.offsets.data(),
-                         s.count, x1 - x0 + 1, (y1 - y0) / k + 1, s.cost.data());
+                         s.count, x1 - x0 + 1, rows, s.cost.data());
 }
 
 unsigned StereoEventMatcherImpl::rectMass(const ZouDescriptorMap& map, Point q, int x0, int x1, int y0, int y1) const
 {
-    if (!sampleRows(y0, y1))
+    const int rows = sampleRows(y0, y1);
+    if (rows == 0)
         return 0;
-    const int k = params_.costRowStep;
     // The batch kernel without candidates: it returns the rectangle's mass alone.
-    return rectSadBatch_(map.descriptor(q.x + x0, q.y + y0), nullptr, k * map.descriptorRowStep(), 0, nullptr, 0,
-                         x1 - x0 + 1, (y1 - y0) / k + 1, nullptr);
+    return rectSadBatch_(map.descriptor(q.x + x0, q.y + y0), nullptr, (size_t)params_.costRowStep * map.descriptorRowStep(),
+                         0, nullptr, 0, x1 - x0 + 1, rows, nullptr);
 }
 
 namespace {
@@ -109,7 +112,7 @@ const unsigned* StereoEventMatcherImpl::scoreSeenColumns(const ZouDescriptorMap&
     unsigned* const columnMass = s.columnMass.data();
     const auto massOfColumn = [&](int j, int ya, int yb) {
         unsigned sum = 0;
-        if (sampleRows(ya, yb))
+        if (sampleRows(ya, yb) > 0)
             for (int y = ya; y <= yb; y += params_.costRowStep)
                 sum += descriptorMass(self.descriptor(r.x + j, r.y + y));
         return sum;

@@ -227,14 +227,16 @@ private:
         return x0 <= x1 && y0 <= y1;
     }
 
-    // Narrows the window rows [y0, y1] (offsets from the event's row) to those the cost windows read: the multiples
-    // of params_.costRowStep. False when none is left.
-    bool sampleRows(int& y0, int& y1) const
+    // Narrows the window rows [y0, y1] (offsets from the event's row) to those the cost windows read, the multiples
+    // of params_.costRowStep, and returns how many they are (0: none).
+    int sampleRows(int& y0, int& y1) const
     {
         const int k = params_.costRowStep;
+        if (k == 1)
+            return std::max(0, y1 - y0 + 1);
         y0 = y0 >= 0 ? (y0 + k - 1) / k * k : -(-y0 / k * k);
         y1 = y1 >= 0 ? y1 / k * k : -((-y1 + k - 1) / k * k);
-        return y0 <= y1;
+        return y0 <= y1 ? (y1 - y0) / k + 1 : 0;
     }
 
     // Sum of the descriptor values over [x0, x1] x [y0, y1] relative to q, rows sampled as addRect() samples them:
