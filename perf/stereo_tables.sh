@@ -8,11 +8,11 @@
 #
 # --set=LIST adds LIST to every run's matcher settings (after the table's own), to see every table under a
 #   setting before making it a default; the rows keep their labels.
-# --tables: realistic, seeds, parameters, lifetimes, idealised, pendulum, tum (default: all). About 25 minutes
+# --tables: realistic, seeds, parameters, lifetimes, idealised, pendulum, tum (default: all). About 30 minutes
 #   for all of them on two cores (--jobs=2, the default); the TUM pairs are read from --shared (default
 #   ../shared/data) and skipped when absent.
-# --work=DIR keeps the runs' outputs there (a temporary folder otherwise) and skips the runs already done, so
-#   that an interrupted run resumes.
+# --work=DIR keeps the runs' outputs there (a temporary folder otherwise; one folder per --set) and skips the runs
+#   already done, so that an interrupted run resumes.
 set -euo pipefail
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
 repo=$(cd "$here/.." && pwd)
