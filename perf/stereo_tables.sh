@@ -177,7 +177,7 @@ before=$(find "$work" -maxdepth 1 -name '*.done' | wc -l)
 echo "stereo_tables: $total runs, $jobs at a time${extra:+, every one with --set=$extra}" >&2
 export work total before
 # Each job in its own output folder; a failed run leaves no report, and its cells read "failed".
-tr '\t' '\n' < "$jobList" | xargs -d '\n' -n 2 -P "$jobs" sh -c 'cmd=$1; mkdir -p "$0"; $cmd --output="$0" > "$0.log" 2>&1 || echo "FAILED: $cmd ($0.log)" >&2; touch "$0.done"; printf "\r%s of %s runs done" "$(($(find "$work" -maxdepth 1 -name "*.done" | wc -l) - before))" "$total" >&2'
+tr '\t' '\n' < "$jobList" | xargs -r -d '\n' -n 2 -P "$jobs" sh -c 'cmd=$1; mkdir -p "$0"; $cmd --output="$0" > "$0.log" 2>&1 || echo "FAILED: $cmd ($0.log)" >&2; touch "$0.done"; printf "\r%s of %s runs done" "$(($(find "$work" -maxdepth 1 -name "*.done" | wc -l) - before))" "$total" >&2'
 echo >&2
 
 # field FILE LABEL: the value cell of the row of a report.md or summary.md whose label starts with LABEL.
