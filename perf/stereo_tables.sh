@@ -106,9 +106,14 @@ evaluate() {  # evaluate NAME SCENE METHOD LIST [MORE ARGS]: event_evaluate, 1 s
 }
 key() { printf '%s' "$1" | md5sum | cut -c1-12; }  # a directory name for a --set list
 
+# The lifetimes table's first row is the realistic table's COUPLED runs.
 if wanted realistic || wanted lifetimes; then
   for scene in $realistic; do
     for m in coupled decoupled fixed sgbm; do evaluate "real.$scene.$m" "$scene" "$m" ""; done
+  done
+fi
+if wanted lifetimes; then
+  for scene in $realistic; do
     evaluate "life.$scene.mlc0" "$scene" coupled "matchedLifetimeConfidence=0"
     evaluate "life.$scene.copies" "$scene" coupled "maxLifetimeCopies=255"
   done
@@ -192,7 +197,8 @@ decimal() { awk -v v="$1" 'BEGIN { if (v == "") print "failed"; else printf "%.1
 first() { awk '{ print $1 }'; }
 density() { decimal "$(field "$1" "disparity density" | first)"; }
 within() { decimal "$(field "$1" "estimated events within 1 px" | first)"; }
-rate() { decimal "$(field "$1" "matching rate (left signal events within 1 px of the truth" | first)"; }
+rawRate() { field "$1" "matching rate (left signal events within 1 px of the truth" | first; }
+rate() { decimal "$(rawRate "$1")"; }
 lifetimeError() { local v; v=$(field "$1" "lifetime median relative error" | first); if [ -z "$v" ]; then echo none; else echo "$(decimal "$v") %"; fi; }
 
 if wanted realistic; then
@@ -219,8 +225,8 @@ fi
 if wanted seeds; then
   # meanRange PREFIX [mean]: "mean % (least-most)" of the six seeds' matching rates, or the mean alone.
   meanRange() {
-    for seed in 0 1 2 3 4 5; do field "$work/$1.$seed" "matching rate (left signal events within 1 px of the truth" | first; done | awk -v only="${2:-}" '
-      { v[NR] = $1; s += $1; if (NR == 1 || $1 < lo) lo = $1; if (NR == 1 || $1 > hi) hi = $1 }
+    for seed in 0 1 2 3 4 5; do rawRate "$work/$1.$seed"; done | awk -v only="${2:-}" '
+      { s += $1; if (NR == 1 || $1 < lo) lo = $1; if (NR == 1 || $1 > hi) hi = $1 }
       END { if (NR != 6) printf "failed"; else if (only != "") printf "%.1f %%", s / NR; else printf "%.1f %% (%.1f-%.1f)", s / NR, lo, hi }'
   }
   echo
