@@ -38,8 +38,9 @@ struct RememberedEstimates
     float at(int x, int y) const { return disparity[(size_t)y * size.width + x]; }
 };
 
-// Disparities of four kinds: continuous, on a 1/64 px grid (the edges of the map's finest counts), whole pixels
-// with long runs of one value, and far ones (beyond 127 px, and 0).
+// Disparities of five kinds: continuous, on a 1/64 px grid (the edges of the map's finest counts), whole pixels
+// with long runs of one value, far ones (beyond 127 px, and 0), and a pixel's worth of values half of which are
+// tiny (below 1e-9 px: a sum of them and the others is rounded, so its order matters).
 float drawDisparity(RNG& rng, int kind)
 {
     switch (kind)
@@ -47,7 +48,8 @@ float drawDisparity(RNG& rng, int kind)
     case 0: return rng.uniform(0.f, 40.f);
     case 1: return 12.f + (float)rng.uniform(-64, 128) / 64.f;
     case 2: return (float)rng.uniform(9, 12);
-    default: return rng.uniform(0, 4) == 0 ? 0.f : rng.uniform(120.f, 300.f);
+    case 3: return rng.uniform(0, 4) == 0 ? 0.f : rng.uniform(120.f, 300.f);
+    default: return rng.uniform(0, 2) == 0 ? rng.uniform(1e-12f, 1e-9f) : rng.uniform(0.f, 1.f);
     }
 }
 
@@ -118,36 +120,49 @@ TEST(Event_ActiveEstimateMap, median_is_the_middle_value_of_the_active_estimates
     EXPECT_GT(windowsBySize[2], 20);
 }
 
-TEST(Event_ActiveEstimateMap, near_sum_adds_the_active_estimates_within_the_tolerance_in_row_order)
+// As the averaging reads it: two windows (the event's and its counterpart's) added to one sum that starts at the
+// event's own estimate. The sum must be the one row-order additions give, bit for bit, whatever order the map adds
+// in; the draw includes estimates near 0 (tiny ones among them) and windows whose sum could pass 2^15 (far
+// disparities, many pixels).
+TEST(Event_ActiveEstimateMap, near_sum_adds_the_active_estimates_within_the_tolerance_as_in_row_order)
 {
     RNG rng(29);
     const Size size(240, 180);
-    for (int kind = 0; kind < 3; kind++)
+    int nearZero = 0, large = 0;
+    for (int kind = 0; kind < 5; kind++)
     {
         ActiveEstimateMap map;
         RememberedEstimates mine(size);
         fillMap(rng, kind, 0.7, map, mine);
         for (int trial = 0; trial < 300; trial++)
         {
-            const Point centre(rng.uniform(-3, size.width + 3), rng.uniform(-3, size.height + 3));
-            const int radius = rng.uniform(0, 8);
-            const int64 t = rng.uniform(0, 1200);
             const float value = drawDisparity(rng, kind), tolerance = 1.5f;
             double expectedSum = value, sum = value;
             int expectedCount = 1, count = 1;
-            for (int y = centre.y - radius; y <= centre.y + radius; y++)
-                for (int x = centre.x - radius; x <= centre.x + radius; x++)
-                    if (y >= 0 && y < size.height && x >= 0 && x < size.width && mine.active(x, y, t) &&
-                        std::abs(mine.at(x, y) - value) <= tolerance)
-                    {
-                        expectedSum += mine.at(x, y);
-                        expectedCount++;
-                    }
-            map.sumNear(centre.x - radius, centre.x + radius, centre.y - radius, centre.y + radius, t, value, tolerance, sum, count);
-            ASSERT_EQ(expectedCount, count);
-            ASSERT_EQ(expectedSum, sum);  // the same additions in the same order: bit for bit
+            for (int window = 0; window < 2; window++)
+            {
+                const Point centre(rng.uniform(-3, size.width + 3), rng.uniform(-3, size.height + 3));
+                const int radius = rng.uniform(0, 8);
+                const int64 t = rng.uniform(0, 1200);
+                for (int y = centre.y - radius; y <= centre.y + radius; y++)
+                    for (int x = centre.x - radius; x <= centre.x + radius; x++)
+                        if (y >= 0 && y < size.height && x >= 0 && x < size.width && mine.active(x, y, t) &&
+                            std::abs(mine.at(x, y) - value) <= tolerance)
+                        {
+                            expectedSum += mine.at(x, y);
+                            expectedCount++;
+                        }
+                map.sumNear(centre.x - radius, centre.x + radius, centre.y - radius, centre.y + radius, t, value,
+                            tolerance, sum, count);
+                ASSERT_EQ(expectedCount, count);
+                ASSERT_EQ(expectedSum, sum) << "kind " << kind << ", value " << value << ", window " << window;
+                large += (2 * radius + 1) * (2 * radius + 1) * (value + tolerance) >= 32768;
+            }
+            nearZero += value < 2 * tolerance;
         }
     }
+    EXPECT_GT(nearZero, 10);
+    EXPECT_GT(large, 10);
 }
 
 TEST(Event_EstimateGather, kernel_equals_scalar_reference)

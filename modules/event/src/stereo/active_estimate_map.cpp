@@ -82,7 +82,8 @@ int binOfRank(const uchar* code, size_t n, size_t& k)
 
 // The value of rank k (0-based) among v[0, n), as std::nth_element finds it (v may be reordered). A window holds
 // a few hundred estimates in random order, and nth_element's comparisons branch on each; counting does not: by
-// whole pixels, then by 1/64 px within the pixel that holds rank k, then among that 1/64 px's few values.
+// whole pixels, then by 1/64 px among the values of the pixel that holds rank k, then among that 1/64 px's few
+// values.
 float valueOfRank(float* v, size_t n, size_t k)
 {
     // Below MIN_COUNTED values, clearing and scanning the counts costs more than it saves.
@@ -96,22 +97,28 @@ float valueOfRank(float* v, size_t n, size_t k)
     for (size_t i = 0; i < n; i++)
         code[i] = (uchar)pixelBin(v[i]);
     const int p = binOfRank<PIXEL_BINS>(code, n, k);
-    // The last bin: the values of the other pixels.
-    for (size_t i = 0; i < n; i++)
-        code[i] = (uchar)(code[i] == p ? fractionBin(v[i], p) : (int)FRACTION_BINS);
-    const int f = binOfRank<FRACTION_BINS + 1>(code, n, k);
-    // The values of that 1/64 px, every value written and the count advanced past the chosen ones.
+    // The values of that pixel, every value written and the count advanced past the chosen ones; then the same
+    // among them for the 1/64 px that holds rank k (in place: the write never passes the read).
     float chosen[MAX_COUNTED];
     size_t m = 0;
     for (size_t i = 0; i < n; i++)
     {
         chosen[m] = v[i];
-        m += code[i] == f;
+        m += code[i] == p;
+    }
+    for (size_t i = 0; i < m; i++)
+        code[i] = (uchar)fractionBin(chosen[i], p);
+    const int f = binOfRank<FRACTION_BINS>(code, m, k);
+    size_t c = 0;
+    for (size_t i = 0; i < m; i++)
+    {
+        chosen[c] = chosen[i];
+        c += code[i] == f;
     }
     // Often one value repeated (whole-pixel estimates, an estimate copied): then there is nothing to select.
-    if (std::all_of(chosen + 1, chosen + m, [&chosen](float d) { return d == chosen[0]; }))
+    if (std::all_of(chosen + 1, chosen + c, [&chosen](float d) { return d == chosen[0]; }))
         return chosen[0];
-    std::nth_element(chosen, chosen + k, chosen + m);
+    std::nth_element(chosen, chosen + k, chosen + c);
     return chosen[k];
 }
 
@@ -153,22 +160,73 @@ size_t ActiveEstimateMap::sampledMedian(Point centre, int rows, int columns, int
     return n;
 }
 
+namespace {
+
+// v as a double where `keep`, else +0, without a branch.
+inline double maskedValue(float v, bool keep)
+{
+    const double d = v;
+    uint64 bits;
+    std::memcpy(&bits, &d, sizeof(bits));
+    bits &= (uint64)0 - (uint64)keep;
+    double masked;
+    std::memcpy(&masked, &bits, sizeof(masked));
+    return masked;
+}
+
+}  // namespace
+
 void ActiveEstimateMap::sumNear(int x0, int x1, int y0, int y1, int64 t, float value, float tolerance, double& sum,
                                 int& n) const
 {
     x0 = std::max(0, x0);
     x1 = std::min(size_.width - 1, x1);
-    for (int y = std::max(0, y0); y <= std::min(size_.height - 1, y1); y++)
+    y0 = std::max(0, y0);
+    y1 = std::min(size_.height - 1, y1);
+    // Every estimate the sum can take lies within tolerance of value (and a float's rounding of that). From 2^-14
+    // on, a float is a multiple of 2^-37, and sums of such below 2^16 are exact in a double: then the order of
+    // the additions does not change the sum, and four running sums (no wait on the previous addition) give the
+    // one an ordered loop gives. Outside that range (estimates near 0, a huge window or disparity, a sum that is
+    // no such multiple) the additions keep their order.
+    const double lowest = (double)value - tolerance, highest = (double)value + tolerance + 1;
+    const double pixels = (double)(x1 - x0 + 1) * (double)(y1 - y0 + 1);
+    const double scaled = std::ldexp(sum, 37);
+    const bool exact = lowest >= 0x1p-13 && std::abs(sum) < 0x1p15 && scaled == std::floor(scaled) &&
+                       pixels * highest < 0x1p15;
+    for (int y = y0; y <= y1; y++)
     {
         const int64* until = &until_[(size_t)y * size_.width];
         const float* disparity = &disparity_[(size_t)y * size_.width];
-        for (int x = x0; x <= x1; x++)
+        if (!exact)
         {
-            // Adding 0 leaves the sum as it was: the same additions in the same order as a branch would make.
-            const bool near = t < until[x] && std::abs(disparity[x] - value) <= tolerance;
-            sum += near ? (double)disparity[x] : 0.0;
-            n += near;
+            for (int x = x0; x <= x1; x++)
+            {
+                // Adding 0 leaves the sum as it was: the same additions in the same order as a branch would make.
+                const bool near = t < until[x] && std::abs(disparity[x] - value) <= tolerance;
+                sum += near ? (double)disparity[x] : 0.0;
+                n += near;
+            }
+            continue;
         }
+        // Both tests evaluated and the value masked by bits: the compiler would branch on `&&` or `?:`, and the
+        // window's activity is random.
+        const auto term = [&](int x) {
+            const bool near = (t < until[x]) & (std::abs(disparity[x] - value) <= tolerance);
+            n += near;
+            return maskedValue(disparity[x], near);
+        };
+        double a = 0, b = 0, c = 0, d = 0;
+        int x = x0;
+        for (; x + 3 <= x1; x += 4)
+        {
+            a += term(x);
+            b += term(x + 1);
+            c += term(x + 2);
+            d += term(x + 3);
+        }
+        for (; x <= x1; x++)
+            a += term(x);
+        sum += (a + b) + (c + d);
     }
 }
 

@@ -34,8 +34,8 @@ public:
     void remember(Point r, int64 t, int64 activeFor, float disparity);
 
     // Adds to sum each estimate active at time t in columns [x0, x1] of rows [y0, y1] (clipped to the image) that
-    // lies within `tolerance` of `value`, row by row, left to right, and counts them in n; without a branch per pixel
-    // (the window's activity is random).
+    // lies within `tolerance` of `value`, and counts them in n: the sum is bit for bit the one additions row by row,
+    // left to right, give; without a branch per pixel (the window's activity is random).
     void sumNear(int x0, int x1, int y0, int y1, int64 t, float value, float tolerance, double& sum, int& n) const;
 
     // The disparities of the estimates active at time t within `rows` rows and `columns` columns of `centre`
