@@ -12,7 +12,7 @@
 #   for all of them on two cores (--jobs=2, the default); the TUM pairs are read from --shared (default
 #   ../shared/data) and skipped when absent.
 # --work=DIR keeps the runs' outputs there (a temporary folder otherwise; one folder per --set) and skips the runs
-#   already done, so that an interrupted run resumes.
+#   that succeeded there, so that an interrupted run resumes and a failed one runs again.
 set -euo pipefail
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
 repo=$(cd "$here/.." && pwd)
@@ -182,7 +182,7 @@ before=$(find "$work" -maxdepth 1 -name '*.done' | wc -l)
 echo "stereo_tables: $total runs, $jobs at a time${extra:+, every one with --set=$extra}" >&2
 export work total before
 # Each job in its own output folder; a failed run leaves no report, and its cells read "failed".
-tr '\t' '\n' < "$jobList" | xargs -r -d '\n' -n 2 -P "$jobs" sh -c 'cmd=$1; mkdir -p "$0"; $cmd --output="$0" > "$0.log" 2>&1 || echo "FAILED: $cmd ($0.log)" >&2; touch "$0.done"; printf "\r%s of %s runs done" "$(($(find "$work" -maxdepth 1 -name "*.done" | wc -l) - before))" "$total" >&2'
+tr '\t' '\n' < "$jobList" | xargs -r -d '\n' -n 2 -P "$jobs" sh -c 'cmd=$1; mkdir -p "$0"; if $cmd --output="$0" > "$0.log" 2>&1; then touch "$0.done"; else echo "FAILED: $cmd ($0.log)" >&2; fi; printf "\r%s of %s runs done" "$(($(find "$work" -maxdepth 1 -name "*.done" | wc -l) - before))" "$total" >&2'
 echo >&2
 
 # field FILE LABEL: the value cell of the row of a report.md or summary.md whose label starts with LABEL.
