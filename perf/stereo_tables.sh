@@ -77,7 +77,7 @@ parameterRows=(
 tumRows=(
   "" "fillRadius=0" "averagingRadius=0,fillRadius=0" "recencyWeight=0" "lifetimeCopyConfidence=0"
   "maxLifetimeCopies=255,lifetimeCopyConfidence=0" "lookAhead=0" "priorTolerance=0" "minConfidence=0.15"
-  "matchedLifetimeConfidence=0" "costWindow=9" "costRowStep=2" "costRowStep=3" "noiseActiveTime=0"
+  "matchedLifetimeConfidence=0" "costWindow=9" "costRowStep=1" "costRowStep=3" "noiseActiveTime=0"
   "costWindow=9,aggregationWindow=17,priorTolerance=0,lookAhead=0,minConfidence=0.15,noiseActiveTime=0,recencyWeight=0,lifetimeCopyConfidence=0,averagingRadius=0,fillRadius=0"
 )
 

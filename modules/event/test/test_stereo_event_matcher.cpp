@@ -743,9 +743,10 @@ TEST(StereoEventMatcher, events_stay_active_for_the_active_distance_in_lifetimes
 // A 3-pixel segment in the right camera after the cold start: each event has 2 neighbours in its 5 x 5 window,
 // fewer than a plane needs (minInliers 5), so every one is noise (lifetime 0). The same segment in the left
 // camera 12 px further right, 5 ms later, finds it active only when noiseActiveTime exceeds 5 ms: at 10 ms it
-// matches at 12 px; at 0 (the paper) the right segment left nothing to match (STEREO_NO_COUNTERPART). 11 ms
-// later it is gone at 10 ms, and still there at the default 25 ms. An edge in other rows (more than the plane fit's
-// reach away) runs the stream's time on.
+// matches at 12 px (to within 0.05 px: the cost windows read every other row, so they hold the 3-row segments
+// unevenly and the sub-pixel fit moves a little); at 0 (the paper) the right segment left nothing to match
+// (STEREO_NO_COUNTERPART). 11 ms later it is gone at 10 ms, and still there at the default 25 ms. An edge in
+// other rows (more than the plane fit's reach away) runs the stream's time on.
 TEST(StereoEventMatcher, events_without_a_lifetime_stay_in_the_descriptors_for_the_noise_active_time)
 {
     const Size size(64, 24);
@@ -783,14 +784,14 @@ TEST(StereoEventMatcher, events_without_a_lifetime_stay_in_the_descriptors_for_t
                     middle[k] = s;
         }
         if (activeUs > 5000)
-            EXPECT_EQ(middle[0].disparity, 12.f);
+            EXPECT_NEAR(middle[0].disparity, 12.f, 0.05f);
         else
         {
             EXPECT_LT(middle[0].disparity, 0.f);
             EXPECT_TRUE((middle[0].flags & STEREO_NO_COUNTERPART) != 0);
         }
         if (activeUs > 11000)
-            EXPECT_EQ(middle[1].disparity, 12.f);
+            EXPECT_NEAR(middle[1].disparity, 12.f, 0.05f);
         else
         {
             EXPECT_LT(middle[1].disparity, 0.f) << activeUs;

@@ -27,7 +27,7 @@ struct StereoMatcherParams
     Size sensorSize;
     int minDisparity = 0, maxDisparity = 40;
     int descriptorWindow = 3, maxVectorLength = 3, costWindow = 17, lifetimeWindow = 9, aggregationWindow = 31;
-    int costRowStep = 1;
+    int costRowStep = 2;
     int uniquenessRatio = 15;
     double minConfidence = 0, matchedLifetimeConfidence = 0.15, lifetimeCopyConfidence = 0.3;
     int maxLifetimeCopies = 1;

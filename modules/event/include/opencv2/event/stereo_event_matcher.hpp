@@ -165,10 +165,11 @@ public:
     /** @brief A, the side of the largest window the iterative aggregation grows to (odd, >= W, at most 31, default 31). */
     CV_WRAP virtual int getAggregationWindow() const = 0;
     CV_WRAP virtual void setAggregationWindow(int a) = 0;
-    /** @brief The cost windows read every k-th row, counting from the event's row (1..4, default 1: every
-    row). Neighbouring rows' descriptors share most of their votes (each histograms an N x N window), so
-    rows left out lose little of what tells the candidates apart, while the cost windows' reads, the largest
-    part of a match's work, fall by the factor k. doc/benchmarks.md has the speed and the accuracy by k. */
+    /** @brief The cost windows read every k-th row, counting from the event's row (1..4, default 2: every
+    other row; 1: every row, as published). Neighbouring rows' descriptors share most of their votes (each
+    histograms an N x N window), so rows left out lose little of what tells the candidates apart, while the
+    cost windows' reads, the largest part of a match's work, fall by the factor k. doc/benchmarks.md has the
+    speed and the accuracy by k. */
     CV_WRAP virtual int getCostRowStep() const = 0;
     CV_WRAP virtual void setCostRowStep(int k) = 0;
     /** @brief Margin [%] by which the best cost must beat every other candidate and "no counterpart" for the
