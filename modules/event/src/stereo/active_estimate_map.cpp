@@ -197,36 +197,31 @@ void ActiveEstimateMap::sumNear(int x0, int x1, int y0, int y1, int64 t, float v
     {
         const int64* until = &until_[(size_t)y * size_.width];
         const float* disparity = &disparity_[(size_t)y * size_.width];
-        if (!exact)
-        {
-            for (int x = x0; x <= x1; x++)
-            {
-                // Adding 0 leaves the sum as it was: the same additions in the same order as a branch would make.
-                const bool near = t < until[x] && std::abs(disparity[x] - value) <= tolerance;
-                sum += near ? (double)disparity[x] : 0.0;
-                n += near;
-            }
-            continue;
-        }
-        // Both tests evaluated and the value masked by bits: the compiler would branch on `&&` or `?:`, and the
-        // window's activity is random.
+        // Both tests evaluated and the value masked by bits (+0 elsewhere, which leaves a sum as it was): the
+        // compiler would branch on `&&` or `?:`, and the window's activity is random.
         const auto term = [&](int x) {
             const bool near = (t < until[x]) & (std::abs(disparity[x] - value) <= tolerance);
             n += near;
             return maskedValue(disparity[x], near);
         };
-        double a = 0, b = 0, c = 0, d = 0;
         int x = x0;
-        for (; x + 3 <= x1; x += 4)
+        if (exact)
         {
-            a += term(x);
-            b += term(x + 1);
-            c += term(x + 2);
-            d += term(x + 3);
+            double a = 0, b = 0, c = 0, d = 0;
+            for (; x + 3 <= x1; x += 4)
+            {
+                a += term(x);
+                b += term(x + 1);
+                c += term(x + 2);
+                d += term(x + 3);
+            }
+            for (; x <= x1; x++)
+                a += term(x);
+            sum += (a + b) + (c + d);
         }
-        for (; x <= x1; x++)
-            a += term(x);
-        sum += (a + b) + (c + d);
+        else
+            for (; x <= x1; x++)
+                sum += term(x);
     }
 }
 
