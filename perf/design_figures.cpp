@@ -36,6 +36,7 @@ using opencv_test::barsLifetimeRatio;
 using opencv_test::defaultInlierDistance;
 using opencv_test::generateLeftCamera;
 using opencv_test::LeftCameraEvents;
+using opencv_test::pendulumAsTumFires;
 using opencv_test::perfectLifetimes;
 
 namespace {
@@ -149,21 +150,9 @@ void printSlowing()
     for (const char* scene : { "pendulum", "pendulum_patterned" })
         for (bool recordingLike : { false, true })
         {
-            const Ptr<StereoEventSimulator> built = StereoEventSimulator::create(scene, SENSOR_DVS128);
-            SimulatorSettings s = built->getSettings();
-            std::vector<SimulatedPlane> planes = built->getPlanes();
-            if (recordingLike)
-            {
-                s.blurSigmaPx = 0.8;
-                s.thresholdOn = s.thresholdOff = 0.2;
-                for (SimulatedPlane& p : planes)
-                {
-                    p.velocity *= 0.5;
-                    p.angularVelocity *= 0.5;
-                    p.swingFrequency *= 0.5;
-                }
-            }
-            const Ptr<StereoEventSimulator> sim = StereoEventSimulator::create(planes, s);
+            const Ptr<StereoEventSimulator> sim =
+                recordingLike ? pendulumAsTumFires(scene) : StereoEventSimulator::create(scene, SENSOR_DVS128);
+            const SimulatorSettings s = sim->getSettings();
             const LeftCameraEvents run = generateLeftCamera(*sim, recordingLike ? 7e6 : 3.5e6);
             Mat lifetimes, flow, status, quality;
             LifetimeEstimator::create(s.resolution)->process(run.events, lifetimes, flow, status, quality);

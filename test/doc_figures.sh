@@ -193,6 +193,13 @@ expect doc/lifetime.md "$(halfFiring 1 "8 px of travel") and $(halfFiring 2 "8 p
 for row in "\`pendulum\`, as built" "\`pendulum\`, as TUM" "\`pendulum_patterned\`, as built" "\`pendulum_patterned\`, as TUM"; do
   expect doc/lifetime.md "$(grep -F -- "| $row" "$work/design.txt")" "design_figures --figures=slowing: $row"
 done
+# The swinging ball's tracked lifetimes against the check (perf/ball_motion_check, doc/benchmarks.md): every row
+# it prints, the TUM pendulum's when present.
+ballArgs=()
+if [ -d "$tum" ]; then ballArgs=(--recording="$tum/pendulum_left_30cm_2.tsv.txt"); fi
+while IFS= read -r row; do
+  expect doc/benchmarks.md "$row" "ball_motion_check:$(cut -d'|' -f2,3 <<< "$row")"
+done < <("$build/perf/ball_motion_check" "${ballArgs[@]}" | grep -E '^[|] (simulated|TUM)')
 
 if [ ! -d "$tum" ]; then
   # The real recordings' figures need them; the simulated ones above are checked (a failure there is one).

@@ -86,6 +86,26 @@ inline void perfectLifetimes(const cv::Mat& groundTruth, const std::vector<int>&
     }
 }
 
+/** A DVS128 pendulum scene (`pendulum` or `pendulum_patterned`) set as the TUM pendulum recording fires: half
+the swing's speed, 0.8 px of blur, thresholds of 0.2 (each pixel fires a train of events as the ball's outline
+passes). design_figures and ball_motion_check share it. */
+inline cv::Ptr<cv::event::StereoEventSimulator> pendulumAsTumFires(const cv::String& scene)
+{
+    using namespace cv::event;
+    const cv::Ptr<StereoEventSimulator> built = StereoEventSimulator::create(scene, SENSOR_DVS128);
+    SimulatorSettings s = built->getSettings();
+    std::vector<SimulatedPlane> planes = built->getPlanes();
+    s.blurSigmaPx = 0.8;
+    s.thresholdOn = s.thresholdOff = 0.2;
+    for (SimulatedPlane& p : planes)
+    {
+        p.velocity *= 0.5;
+        p.angularVelocity *= 0.5;
+        p.swingFrequency *= 0.5;
+    }
+    return StereoEventSimulator::create(planes, s);
+}
+
 /** The `fan` scene's blade side edges (in the left camera, clear of the hub, where the two bars cross, and of
 the tips: 6-12 px from the centre): each event's true lifetime over the closed form 1 / (omega sqrt(r^2 - w^2))
 of a side edge r px from the hub and half a blade's width w off its axis, sorted. */
