@@ -6,9 +6,10 @@
 // the test's own record of what it remembered (each pixel's last estimate and when it ends), the median taken
 // by std::nth_element. Windows of every size from one pixel to 51 x 51, with every row or every second or
 // third row, clipped at every border, hold from none to thousands of estimates; the disparities include
-// whole pixels, exact multiples of 1/64 px, long runs of one value and values beyond 127 px. The scan's vector
-// kernel against its scalar reference: runs of every length up to 40 from every alignment, times at and
-// around the ends of the estimates (t < until is the test: equal is inactive), and the 64-bit extremes.
+// whole pixels, exact multiples of 1/64 px, long runs of one value, values beyond 127 px and values below
+// 1e-9 px. The scan's vector kernel against its scalar reference: runs of every length up to 40 from every
+// alignment, times at and around the ends of the estimates (t < until is the test: equal is inactive), and the
+// 64-bit extremes.
 
 #include "test_precomp.hpp"
 #include "stereo/active_estimate_map.hpp"
@@ -79,7 +80,7 @@ TEST(Event_ActiveEstimateMap, median_is_the_middle_value_of_the_active_estimates
     const Size size(240, 180);
     std::vector<float> got, expected;
     int windowsBySize[3] = {};  // fewer than 64 estimates, 64..1024, more
-    for (int kind = 0; kind < 4; kind++)
+    for (int kind = 0; kind < 5; kind++)
         for (double density : { 0.05, 0.5, 1.0 })
         {
             ActiveEstimateMap map;
