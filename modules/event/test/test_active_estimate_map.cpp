@@ -7,9 +7,11 @@
 // by std::nth_element. Windows of every size from one pixel to 51 x 51, with every row or every second or
 // third row, clipped at every border, hold from none to thousands of estimates; the disparities include
 // whole pixels, exact multiples of 1/64 px, long runs of one value, values beyond 127 px and values below
-// 1e-9 px. The scan's vector kernel against its scalar reference: runs of every length up to 40 from every
-// alignment, times at and around the ends of the estimates (t < until is the test: equal is inactive), and the
-// 64-bit extremes.
+// 1e-9 px. The vector kernels against their scalar references: the scan's over runs of every length up to 40
+// from every alignment, times at and around the ends of the estimates (t < until is the test: equal is
+// inactive) and the 64-bit extremes; the selection's over the median's bins (whole pixels, 1/64 px, the last
+// one unbounded), values on and beside their ends, in place and not; the near-sum's over values on and beside
+// the tolerance's ends.
 
 #include "test_precomp.hpp"
 #include "stereo/active_estimate_map.hpp"
@@ -196,6 +198,99 @@ TEST(Event_EstimateGather, kernel_equals_scalar_reference)
         ASSERT_EQ(direct, count);
     }
     EXPECT_GT(actives, 10000);
+}
+
+TEST(Event_EstimateGather, range_kernel_equals_scalar_reference)
+{
+    RNG rng(37);
+    const ValuesInRangeFn vector = estimateGatherKernelsForThisCpu().valuesInRange;
+    const ValuesInRangeFn scalar = scalarEstimateGatherKernels().valuesInRange;
+    std::vector<float> values(80 + VALUES_IN_RANGE_PAD), inPlace, got(values.size()), expected(values.size());
+    int kept = 0, boundary = 0;
+    for (int trial = 0; trial < 3000; trial++)
+    {
+        // A bin as the median counts them: [p, p + 1) or [p + f/64, p + (f + 1)/64), the last one unbounded.
+        const int p = trial % 10 == 0 ? 127 : rng.uniform(0, 20), f = rng.uniform(0, 64);
+        const bool fraction = rng.uniform(0, 2) == 1;
+        const float lo = fraction ? (float)p + (float)f / 64 : (float)p;
+        float hi = fraction ? (float)p + (float)(f + 1) / 64 : (float)(p + 1);
+        if (p == 127 && (!fraction || f == 63))
+            hi = std::numeric_limits<float>::infinity();
+        for (float& v : values)
+        {
+            // On an end, a float beside it, inside, or anywhere.
+            const float end = rng.uniform(0, 2) == 0 ? lo : (hi == std::numeric_limits<float>::infinity() ? 300.f : hi);
+            switch (rng.uniform(0, 4))
+            {
+            case 0: v = end; break;
+            case 1: v = std::nextafter(end, rng.uniform(0, 2) == 0 ? 0.f : 1000.f); break;
+            case 2: v = lo + (float)rng.uniform(0., 1.) * (std::min(hi, 300.f) - lo); break;
+            default: v = rng.uniform(0.f, 140.f);
+            }
+        }
+        const int start = rng.uniform(0, 17), n = rng.uniform(0, 64);
+        const size_t count = vector(&values[start], (size_t)n, lo, hi, got.data());
+        ASSERT_EQ(scalar(&values[start], (size_t)n, lo, hi, expected.data()), count);
+        int direct = 0;  // and the reference against the definition
+        for (int i = 0; i < n; i++)
+        {
+            const float v = values[start + i];
+            direct += lo <= v && v < hi;
+            boundary += v == lo || v == hi;
+        }
+        ASSERT_EQ((size_t)direct, count);
+        for (size_t i = 0; i < count; i++)
+            ASSERT_EQ(expected[i], got[i]);
+        // In place: the same values, over the input.
+        inPlace = values;
+        ASSERT_EQ(count, vector(&inPlace[start], (size_t)n, lo, hi, &inPlace[start]));
+        for (size_t i = 0; i < count; i++)
+            ASSERT_EQ(expected[i], inPlace[start + i]);
+        kept += (int)count;
+    }
+    EXPECT_GT(kept, 10000);
+    EXPECT_GT(boundary, 10000);
+}
+
+// Values on the 1/64 px grid, so that every order of the additions gives one sum (the kernel's contract).
+TEST(Event_EstimateGather, near_sum_kernel_equals_scalar_reference)
+{
+    RNG rng(41);
+    const EstimateNearSumFn vector = estimateGatherKernelsForThisCpu().nearSum;
+    const EstimateNearSumFn scalar = scalarEstimateGatherKernels().nearSum;
+    std::vector<int64> until(64);
+    std::vector<float> disparity(64);
+    int nears = 0, boundary = 0;
+    for (int trial = 0; trial < 3000; trial++)
+    {
+        const int64 t = rng.uniform(-5, 6);
+        const float value = (float)rng.uniform(64, 64 * 40) / 64, tolerance = 1.5f;
+        for (size_t i = 0; i < until.size(); i++)
+        {
+            until[i] = rng.uniform(0, 8) == 0 ? std::numeric_limits<int64>::min() : rng.uniform(-6, 7);
+            // The tolerance's ends, or anywhere within 3 px.
+            disparity[i] = rng.uniform(0, 3) == 0 ? value + (rng.uniform(0, 2) == 0 ? -tolerance : tolerance)
+                                                  : value + (float)rng.uniform(-192, 193) / 64;
+        }
+        const int start = rng.uniform(0, 17), n = rng.uniform(0, 41);
+        double sum = value, expectedSum = value, directSum = value;
+        const int count = vector(&until[start], &disparity[start], n, t, value, tolerance, sum);
+        ASSERT_EQ(scalar(&until[start], &disparity[start], n, t, value, tolerance, expectedSum), count);
+        ASSERT_EQ(expectedSum, sum);
+        int direct = 0;  // and the reference against the definition, in order
+        for (int i = start; i < start + n; i++)
+            if (t < until[i] && std::abs(disparity[i] - value) <= tolerance)
+            {
+                directSum += disparity[i];
+                direct++;
+                boundary += std::abs(disparity[i] - value) == tolerance;
+            }
+        ASSERT_EQ(direct, count);
+        ASSERT_EQ(directSum, sum);
+        nears += count;
+    }
+    EXPECT_GT(nears, 10000);
+    EXPECT_GT(boundary, 1000);
 }
 
 }}  // namespace

@@ -80,11 +80,11 @@ int binOfRank(const uchar* code, size_t n, size_t& k)
     }
 }
 
-// The value of rank k (0-based) among v[0, n), as std::nth_element finds it (v may be reordered). A window holds
-// a few hundred estimates in random order, and nth_element's comparisons branch on each; counting does not: by
-// whole pixels, then by 1/64 px among the values of the pixel that holds rank k, then among that 1/64 px's few
-// values.
-float valueOfRank(float* v, size_t n, size_t k)
+// The value of rank k (0-based) among v[0, n), as std::nth_element finds it (v may be reordered). A window holds a few hundred estimates in random order, and nth_element's
+// comparisons branch on each; counting does not: by whole pixels, then by 1/64 px among the values of the pixel
+// that holds rank k, then among that 1/64 px's few values. A bin is a range of values (the bins' ends are exact
+// floats), so the values of one are those the range kernel keeps.
+float valueOfRank(float* v, size_t n, size_t k, ValuesInRangeFn valuesInRange)
 {
     // Below MIN_COUNTED values, clearing and scanning the counts costs more than it saves.
     enum { MIN_COUNTED = 64, MAX_COUNTED = 1024 };
@@ -97,24 +97,15 @@ float valueOfRank(float* v, size_t n, size_t k)
     for (size_t i = 0; i < n; i++)
         code[i] = (uchar)pixelBin(v[i]);
     const int p = binOfRank<PIXEL_BINS>(code, n, k);
-    // The values of that pixel, every value written and the count advanced past the chosen ones; then the same
-    // among them for the 1/64 px that holds rank k (in place: the write never passes the read).
-    float chosen[MAX_COUNTED];
-    size_t m = 0;
-    for (size_t i = 0; i < n; i++)
-    {
-        chosen[m] = v[i];
-        m += code[i] == p;
-    }
+    const float unbounded = std::numeric_limits<float>::infinity();
+    const float pixelEnd = p == PIXEL_BINS - 1 ? unbounded : (float)(p + 1);
+    float chosen[MAX_COUNTED + VALUES_IN_RANGE_PAD];
+    const size_t m = valuesInRange(v, n, (float)p, pixelEnd, chosen);
     for (size_t i = 0; i < m; i++)
         code[i] = (uchar)fractionBin(chosen[i], p);
     const int f = binOfRank<FRACTION_BINS>(code, m, k);
-    size_t c = 0;
-    for (size_t i = 0; i < m; i++)
-    {
-        chosen[c] = chosen[i];
-        c += code[i] == f;
-    }
+    const float fractionEnd = f == FRACTION_BINS - 1 ? pixelEnd : (float)p + (float)(f + 1) / FRACTION_BINS;
+    const size_t c = valuesInRange(chosen, m, (float)p + (float)f / FRACTION_BINS, fractionEnd, chosen);
     // Often one value repeated (whole-pixel estimates, an estimate copied): then there is nothing to select.
     if (std::all_of(chosen + 1, chosen + c, [&chosen](float d) { return d == chosen[0]; }))
         return chosen[0];
@@ -156,25 +147,9 @@ size_t ActiveEstimateMap::sampledMedian(Point centre, int rows, int columns, int
     disparities.resize(n);
     if (n == 0)
         return 0;
-    median = valueOfRank(out, n, n / 2);
+    median = valueOfRank(out, n, n / 2, valuesInRange_);
     return n;
 }
-
-namespace {
-
-// v as a double where `keep`, else +0, without a branch.
-inline double maskedValue(float v, bool keep)
-{
-    const double d = v;
-    uint64 bits;
-    std::memcpy(&bits, &d, sizeof(bits));
-    bits &= (uint64)0 - (uint64)keep;
-    double masked;
-    std::memcpy(&masked, &bits, sizeof(masked));
-    return masked;
-}
-
-}  // namespace
 
 void ActiveEstimateMap::sumNear(int x0, int x1, int y0, int y1, int64 t, float value, float tolerance, double& sum,
                                 int& n) const
@@ -185,9 +160,9 @@ void ActiveEstimateMap::sumNear(int x0, int x1, int y0, int y1, int64 t, float v
     y1 = std::min(size_.height - 1, y1);
     // Every estimate the sum can take lies within tolerance of value (and a float's rounding of that). From 2^-14
     // on, a float is a multiple of 2^-37, and sums of such below 2^16 are exact in a double: then the order of
-    // the additions does not change the sum, and four running sums (no wait on the previous addition) give the
-    // one an ordered loop gives. Outside that range (estimates near 0, a huge window or disparity, a sum that is
-    // no such multiple) the additions keep their order.
+    // the additions does not change the sum, and the kernel's (vector lanes, no wait on the previous addition)
+    // gives the one an ordered loop gives. Outside that range (estimates near 0, a huge window or disparity, a sum
+    // that is no such multiple) the additions keep their order.
     const double lowest = (double)value - tolerance, highest = (double)value + tolerance + 1;
     const double pixels = (double)(x1 - x0 + 1) * (double)(y1 - y0 + 1);
     const double scaled = std::ldexp(sum, 37);
@@ -195,33 +170,19 @@ void ActiveEstimateMap::sumNear(int x0, int x1, int y0, int y1, int64 t, float v
                        pixels * highest < 0x1p15;
     for (int y = y0; y <= y1; y++)
     {
-        const int64* until = &until_[(size_t)y * size_.width];
-        const float* disparity = &disparity_[(size_t)y * size_.width];
-        // Both tests evaluated and the value masked by bits (+0 elsewhere, which leaves a sum as it was): the
-        // compiler would branch on `&&` or `?:`, and the window's activity is random.
-        const auto term = [&](int x) {
-            const bool near = (t < until[x]) & (std::abs(disparity[x] - value) <= tolerance);
-            n += near;
-            return maskedValue(disparity[x], near);
-        };
-        int x = x0;
+        const int64* until = &until_[(size_t)y * size_.width + x0];
+        const float* disparity = &disparity_[(size_t)y * size_.width + x0];
         if (exact)
         {
-            double a = 0, b = 0, c = 0, d = 0;
-            for (; x + 3 <= x1; x += 4)
-            {
-                a += term(x);
-                b += term(x + 1);
-                c += term(x + 2);
-                d += term(x + 3);
-            }
-            for (; x <= x1; x++)
-                a += term(x);
-            sum += (a + b) + (c + d);
+            n += nearSum_(until, disparity, x1 - x0 + 1, t, value, tolerance, sum);
+            continue;
         }
-        else
-            for (; x <= x1; x++)
-                sum += term(x);
+        for (int x = 0; x <= x1 - x0; x++)
+        {
+            const bool near = (t < until[x]) & (std::abs(disparity[x] - value) <= tolerance);
+            sum += near ? (double)disparity[x] : 0.0;
+            n += near;
+        }
     }
 }
 

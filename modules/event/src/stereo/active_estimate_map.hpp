@@ -61,6 +61,8 @@ private:
     int blocksPerRow_ = 0;
     std::vector<int64> lastEventTime_;
     EstimateGatherFn gather_ = estimateGatherKernelsForThisCpu().gather;
+    ValuesInRangeFn valuesInRange_ = estimateGatherKernelsForThisCpu().valuesInRange;
+    EstimateNearSumFn nearSum_ = estimateGatherKernelsForThisCpu().nearSum;
 };
 
 }  // namespace detail

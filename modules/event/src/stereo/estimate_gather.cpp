@@ -20,6 +20,8 @@ EstimateGatherKernels scalarEstimateGatherKernels()
 {
     EstimateGatherKernels k;
     k.gather = cpu_baseline::gatherEstimatesScalar;  // the same in every compiled instruction set
+    k.valuesInRange = cpu_baseline::valuesInRangeScalar;
+    k.nearSum = cpu_baseline::nearSumScalar;
     k.name = "scalar";
     return k;
 }

@@ -20,9 +20,24 @@ enum { ESTIMATE_GATHER_PAD = 8 };
 
 typedef int (*EstimateGatherFn)(const int64* until, const float* disparity, int n, int64 t, float* out);
 
+/** The median's selection (ActiveEstimateMap): the values v[i], i < n, with lo <= v[i] < hi, in order, to out;
+returns their count. `out` needs room for the count plus VALUES_IN_RANGE_PAD entries, and may be v itself. */
+enum { VALUES_IN_RANGE_PAD = 16 };
+
+typedef size_t (*ValuesInRangeFn)(const float* v, size_t n, float lo, float hi, float* out);
+
+/** The averaging's sum (ActiveEstimateMap::sumNear), one run of a row at a time: adds to sum the disparities of
+the pixels i < n whose estimate is active at t and lies within `tolerance` of `value` (|disparity - value| <=
+tolerance, in float), and returns their count. The additions are in no particular order: the caller takes it
+only where every order gives the same sum. */
+typedef int (*EstimateNearSumFn)(const int64* until, const float* disparity, int n, int64 t, float value,
+                                 float tolerance, double& sum);
+
 struct EstimateGatherKernels
 {
     EstimateGatherFn gather;
+    ValuesInRangeFn valuesInRange;
+    EstimateNearSumFn nearSum;
     const char* name;  //!< "avx512", "avx2", "sse2", "neon", "simd128" or "scalar"
 };
 

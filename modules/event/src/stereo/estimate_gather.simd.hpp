@@ -5,17 +5,21 @@
 // The estimate scan's kernels (estimate_gather.hpp), compiled once per instruction set the module dispatches to
 // and chosen at run time by estimate_gather.cpp.
 //
-// A window's activity is random, so the scalar version writes every pixel's disparity and advances its count
-// past the active ones, with no branch on the data. The times are 64-bit: AVX-512 compares 8 at once and
+// A window's activity is random, so the scalar versions write every value and advance their count past the
+// kept ones, with no branch on the data. The times are 64-bit: AVX-512 compares 8 at once and
 // compresses their disparities into a register (stored whole: compressing to memory runs in microcode on some
 // CPUs); AVX2 compares 4 and moves their disparities together with a permutation from a table. Instruction sets
-// without a 64-bit compare (SSE2, NEON's baseline here) take the scalar version.
+// without a 64-bit compare (SSE2, NEON's baseline here) take the scalar versions. The selection's values are
+// 32-bit floats: AVX-512 tests 16 at once, AVX2 4 with the same table.
 
 #include "stereo/estimate_gather.hpp"
 
 #include "opencv2/core/hal/intrin.hpp"
 
 #include "common/simd_kernel_name.hpp"
+
+#include <cmath>
+#include <cstring>
 
 namespace cv {
 namespace event {
@@ -40,6 +44,55 @@ static inline int gatherEstimatesScalar(const int64* until, const float* dispari
     return count;
 }
 
+static inline size_t valuesInRangeScalar(const float* v, size_t n, float lo, float hi, float* out)
+{
+    size_t count = 0;
+    for (size_t i = 0; i < n; i++)
+    {
+        const float value = v[i];  // read before the write: out may be v
+        out[count] = value;
+        count += (lo <= value) & (value < hi);
+    }
+    return count;
+}
+
+// v as a double where `keep`, else +0, without a branch.
+static inline double maskedValue(float v, bool keep)
+{
+    const double d = v;
+    uint64 bits;
+    std::memcpy(&bits, &d, sizeof(bits));
+    bits &= (uint64)0 - (uint64)keep;
+    double masked;
+    std::memcpy(&masked, &bits, sizeof(masked));
+    return masked;
+}
+
+// Four running sums, so that no addition waits on the one before.
+static inline int nearSumScalar(const int64* until, const float* disparity, int n, int64 t, float value,
+                                float tolerance, double& sum)
+{
+    int count = 0;
+    const auto term = [&](int i) {
+        const bool near = (t < until[i]) & (std::abs(disparity[i] - value) <= tolerance);
+        count += near;
+        return maskedValue(disparity[i], near);
+    };
+    double a = 0, b = 0, c = 0, d = 0;
+    int i = 0;
+    for (; i + 4 <= n; i += 4)
+    {
+        a += term(i);
+        b += term(i + 1);
+        c += term(i + 2);
+        d += term(i + 3);
+    }
+    for (; i < n; i++)
+        a += term(i);
+    sum += (a + b) + (c + d);
+    return count;
+}
+
 #if CV_AVX512_SKX
 static int gatherEstimates(const int64* until, const float* disparity, int n, int64 t, float* out)
 {
@@ -52,6 +105,47 @@ static int gatherEstimates(const int64* until, const float* disparity, int n, in
         _mm256_storeu_ps(out + count, _mm256_maskz_compress_ps(active, _mm256_maskz_loadu_ps(lanes, disparity + i)));
         count += (int)_mm_popcnt_u32(active);
     }
+    return count;
+}
+
+static size_t valuesInRange(const float* v, size_t n, float lo, float hi, float* out)
+{
+    const __m512 low = _mm512_set1_ps(lo), high = _mm512_set1_ps(hi);
+    size_t count = 0;
+    for (size_t i = 0; i < n; i += 16)
+    {
+        const __mmask16 lanes = (__mmask16)(n - i >= 16 ? 0xFFFFu : (1u << (n - i)) - 1u);
+        const __m512 value = _mm512_maskz_loadu_ps(lanes, v + i);
+        const __mmask16 kept = _mm512_mask_cmp_ps_mask(_mm512_mask_cmp_ps_mask(lanes, value, low, _CMP_GE_OQ), value,
+                                                       high, _CMP_LT_OQ);
+        _mm512_storeu_ps(out + count, _mm512_maskz_compress_ps(kept, value));
+        count += (size_t)_mm_popcnt_u32(kept);
+    }
+    return count;
+}
+
+static int nearSum(const int64* until, const float* disparity, int n, int64 t, float value, float tolerance,
+                   double& sum)
+{
+    const __m512i time = _mm512_set1_epi64(t);
+    const __m256 centre = _mm256_set1_ps(value), reach = _mm256_set1_ps(tolerance);
+    const __m256 magnitude = _mm256_castsi256_ps(_mm256_set1_epi32(0x7FFFFFFF));
+    __m512d total = _mm512_setzero_pd();
+    int count = 0;
+    for (int i = 0; i < n; i += 8)
+    {
+        const __mmask8 lanes = (__mmask8)(n - i >= 8 ? 0xFFu : (1u << (n - i)) - 1u);
+        const __mmask8 active = _mm512_mask_cmpgt_epi64_mask(lanes, _mm512_maskz_loadu_epi64(lanes, until + i), time);
+        const __m256 d = _mm256_maskz_loadu_ps(lanes, disparity + i);
+        const __m256 gap = _mm256_and_ps(_mm256_sub_ps(d, centre), magnitude);
+        const __mmask8 near = _mm256_mask_cmp_ps_mask(active, gap, reach, _CMP_LE_OQ);
+        total = _mm512_mask_add_pd(total, near, total, _mm512_maskz_cvtps_pd(near, d));
+        count += (int)_mm_popcnt_u32(near);
+    }
+    // (GCC 12 warns of the undefined lanes _mm512_reduce_add_pd and _mm512_castpd512_pd256 start from.)
+    const __m256d half = _mm256_add_pd(_mm512_maskz_extractf64x4_pd(0xFF, total, 0), _mm512_maskz_extractf64x4_pd(0xFF, total, 1));
+    const __m128d quarter = _mm_add_pd(_mm256_castpd256_pd128(half), _mm256_extractf128_pd(half, 1));
+    sum += _mm_cvtsd_f64(_mm_add_sd(quarter, _mm_unpackhi_pd(quarter, quarter)));
     return count;
 }
 #elif CV_AVX2
@@ -75,6 +169,44 @@ static int gatherEstimates(const int64* until, const float* disparity, int n, in
     }
     return count + gatherEstimatesScalar(until + i, disparity + i, n - i, t, out + count);
 }
+
+static size_t valuesInRange(const float* v, size_t n, float lo, float hi, float* out)
+{
+    const __m128 low = _mm_set1_ps(lo), high = _mm_set1_ps(hi);
+    size_t count = 0, i = 0;
+    for (; i + 4 <= n; i += 4)
+    {
+        const __m128 value = _mm_loadu_ps(v + i);
+        const int kept = _mm_movemask_ps(_mm_and_ps(_mm_cmp_ps(value, low, _CMP_GE_OQ), _mm_cmp_ps(value, high, _CMP_LT_OQ)));
+        const __m128i order = _mm_loadu_si128((const __m128i*)frontOfMask[kept]);
+        _mm_storeu_ps(out + count, _mm_permutevar_ps(value, order));
+        count += (size_t)_mm_popcnt_u32((unsigned)kept);
+    }
+    return count + valuesInRangeScalar(v + i, n - i, lo, hi, out + count);
+}
+
+static int nearSum(const int64* until, const float* disparity, int n, int64 t, float value, float tolerance,
+                   double& sum)
+{
+    const __m256i time = _mm256_set1_epi64x(t);
+    const __m128 centre = _mm_set1_ps(value), reach = _mm_set1_ps(tolerance);
+    const __m128 magnitude = _mm_castsi128_ps(_mm_set1_epi32(0x7FFFFFFF));
+    __m256d total = _mm256_setzero_pd();
+    int count = 0, i = 0;
+    for (; i + 4 <= n; i += 4)
+    {
+        const __m256i live = _mm256_cmpgt_epi64(_mm256_loadu_si256((const __m256i*)(until + i)), time);
+        const __m128 d = _mm_loadu_ps(disparity + i);
+        const __m128 close = _mm_cmp_ps(_mm_and_ps(_mm_sub_ps(d, centre), magnitude), reach, _CMP_LE_OQ);
+        // 32-bit lane masks widened to the 64-bit lanes of the doubles
+        const __m256d near = _mm256_and_pd(_mm256_castsi256_pd(live), _mm256_castsi256_pd(_mm256_cvtepi32_epi64(_mm_castps_si128(close))));
+        total = _mm256_add_pd(total, _mm256_and_pd(near, _mm256_cvtps_pd(d)));
+        count += (int)_mm_popcnt_u32((unsigned)_mm256_movemask_pd(near));
+    }
+    const __m128d half = _mm_add_pd(_mm256_castpd256_pd128(total), _mm256_extractf128_pd(total, 1));
+    sum += _mm_cvtsd_f64(_mm_add_sd(half, _mm_unpackhi_pd(half, half)));
+    return count + nearSumScalar(until + i, disparity + i, n - i, t, value, tolerance, sum);
+}
 #endif
 
 EstimateGatherKernels estimateGatherKernels()
@@ -82,8 +214,12 @@ EstimateGatherKernels estimateGatherKernels()
     EstimateGatherKernels k;
 #if CV_AVX512_SKX || CV_AVX2
     k.gather = gatherEstimates;
+    k.valuesInRange = valuesInRange;
+    k.nearSum = nearSum;
 #else
     k.gather = gatherEstimatesScalar;
+    k.valuesInRange = valuesInRangeScalar;
+    k.nearSum = nearSumScalar;
 #endif
 #if CV_SIMD
     k.name = simdKernelName();
