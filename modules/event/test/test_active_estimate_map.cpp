@@ -168,25 +168,102 @@ TEST(Event_ActiveEstimateMap, near_sum_adds_the_active_estimates_within_the_tole
     EXPECT_GT(large, 10);
 }
 
+// The map keeps each end as a 32-bit offset from a time of its row: times far from zero (an epoch's
+// microseconds, negative ones), and gaps of 2^29 to 2^31 + 2^29 us within rows (so that rows' times move while
+// long estimates, up to 2^30 us, are still active), against the test's own 64-bit record. Every remember is
+// followed by a query a little before or after it: the window's count, estimates, median and near-sum, and what
+// a pixel shows.
+TEST(Event_ActiveEstimateMap, ends_far_from_time_zero_and_across_gaps_beyond_32_bits)
+{
+    RNG rng(43);
+    const Size size(64, 12);
+    std::vector<float> got, expected;
+    int longActive = 0, shown = 0;
+    for (const int64 origin : { (int64)0, (int64)1700000000000000LL, (int64)-4000000000000LL })
+    {
+        ActiveEstimateMap map;
+        map.reset(size);
+        RememberedEstimates mine(size);
+        std::vector<int64> last((size_t)size.area(), 0);
+        int64 t = origin;
+        for (int step = 0; step < 3000; step++)
+        {
+            t += rng.uniform(0, 40) == 0 ? (int64)rng.uniform(1 << 29, (1 << 30) + (1 << 29)) * 2 : rng.uniform(0, 300);
+            const Point r(rng.uniform(0, size.width), rng.uniform(0, size.height));
+            const int64 activeFor = rng.uniform(0, 10) == 0 ? rng.uniform(1 << 29, 1 << 30) : rng.uniform(1, 401);
+            const float d = rng.uniform(0, 10) == 0 ? -1.f : drawDisparity(rng, 1);
+            mine.remember(map, r, t, activeFor, d);
+            last[(size_t)r.y * size.width + r.x] = t;
+
+            const int64 q = t + rng.uniform(-500, 501);
+            expected.clear();
+            for (int y = 0; y < size.height; y++)
+                for (int x = 0; x < size.width; x++)
+                    if (mine.active(x, y, q))
+                        expected.push_back(mine.at(x, y));
+            float median = -100.f;
+            const Point centre(size.width / 2, size.height / 2);
+            ASSERT_EQ(expected.size(), map.sampledMedian(centre, size.height, size.width, 1, q, got, median)) << step;
+            std::sort(expected.begin(), expected.end());
+            std::sort(got.begin(), got.end());
+            ASSERT_EQ(expected, got) << step;
+            if (!expected.empty())
+            {
+                ASSERT_EQ(expected[expected.size() / 2], median);
+            }
+            longActive += (int)std::count_if(mine.until.begin(), mine.until.end(), [&](int64 u) { return u - q > 1000; });
+
+            const float value = drawDisparity(rng, 1);
+            double sum = value, expectedSum = value;
+            int count = 1, expectedCount = 1;
+            map.sumNear(0, size.width - 1, 0, size.height - 1, q, value, 1.5f, sum, count);
+            for (int y = 0; y < size.height; y++)
+                for (int x = 0; x < size.width; x++)
+                    if (mine.active(x, y, q) && std::abs(mine.at(x, y) - value) <= 1.5f)
+                    {
+                        expectedSum += mine.at(x, y);
+                        expectedCount++;
+                    }
+            ASSERT_EQ(expectedCount, count);
+            ASSERT_EQ(expectedSum, sum);
+
+            // Half the time the pixel just remembered.
+            const bool remembered = rng.uniform(0, 2) == 0;
+            const int x = remembered ? r.x : rng.uniform(0, size.width), y = remembered ? r.y : rng.uniform(0, size.height);
+            const size_t i = (size_t)y * size.width + x;
+            const bool expectShown = mine.at(x, y) >= 0 && last[i] <= q && mine.active(x, y, q);
+            float disparity = -100.f;
+            ASSERT_EQ(expectShown, map.shownAt(x, y, (double)q, disparity)) << step;
+            if (expectShown)
+            {
+                ASSERT_EQ(mine.at(x, y), disparity);
+            }
+            shown += expectShown;
+        }
+    }
+    EXPECT_GT(longActive, 10000);  // estimates still active across the gaps
+    EXPECT_GT(shown, 100);
+}
+
 TEST(Event_EstimateGather, kernel_equals_scalar_reference)
 {
     RNG rng(31);
     const EstimateGatherFn vector = estimateGatherKernelsForThisCpu().gather;
     const EstimateGatherFn scalar = scalarEstimateGatherKernels().gather;
-    const int64 extremes[] = { std::numeric_limits<int64>::min(), std::numeric_limits<int64>::max() };
-    std::vector<int64> until(64);
-    std::vector<float> disparity(64), got(64 + ESTIMATE_GATHER_PAD), expected(64 + ESTIMATE_GATHER_PAD);
+    const int32_t extremes[] = { std::numeric_limits<int32_t>::min(), std::numeric_limits<int32_t>::max() };
+    std::vector<int32_t> until(80);
+    std::vector<float> disparity(80), got(80 + ESTIMATE_GATHER_PAD), expected(80 + ESTIMATE_GATHER_PAD);
     int actives = 0;
     for (int trial = 0; trial < 2000; trial++)
     {
-        const int64 t = trial % 50 == 0 ? extremes[trial / 50 % 2] : rng.uniform(-5, 6);
+        const int32_t t = trial % 50 == 0 ? extremes[trial / 50 % 2] : rng.uniform(-5, 6);
         for (size_t i = 0; i < until.size(); i++)
         {
             // Mostly around t (at it, just before, just after), sometimes an extreme.
             until[i] = rng.uniform(0, 8) == 0 ? extremes[rng.uniform(0, 2)] : rng.uniform(-6, 7);
             disparity[i] = rng.uniform(0.f, 40.f);
         }
-        const int start = rng.uniform(0, 17), n = rng.uniform(0, 41);
+        const int start = rng.uniform(0, 17), n = rng.uniform(0, 64);
         const int count = vector(&until[start], &disparity[start], n, t, got.data());
         ASSERT_EQ(scalar(&until[start], &disparity[start], n, t, expected.data()), count);
         for (int i = 0; i < count; i++)
@@ -258,21 +335,21 @@ TEST(Event_EstimateGather, near_sum_kernel_equals_scalar_reference)
     RNG rng(41);
     const EstimateNearSumFn vector = estimateGatherKernelsForThisCpu().nearSum;
     const EstimateNearSumFn scalar = scalarEstimateGatherKernels().nearSum;
-    std::vector<int64> until(64);
-    std::vector<float> disparity(64);
+    std::vector<int32_t> until(80);
+    std::vector<float> disparity(80);
     int nears = 0, boundary = 0;
     for (int trial = 0; trial < 3000; trial++)
     {
-        const int64 t = rng.uniform(-5, 6);
+        const int32_t t = rng.uniform(-5, 6);
         const float value = (float)rng.uniform(64, 64 * 40) / 64, tolerance = 1.5f;
         for (size_t i = 0; i < until.size(); i++)
         {
-            until[i] = rng.uniform(0, 8) == 0 ? std::numeric_limits<int64>::min() : rng.uniform(-6, 7);
+            until[i] = rng.uniform(0, 8) == 0 ? std::numeric_limits<int32_t>::min() : rng.uniform(-6, 7);
             // The tolerance's ends, or anywhere within 3 px.
             disparity[i] = rng.uniform(0, 3) == 0 ? value + (rng.uniform(0, 2) == 0 ? -tolerance : tolerance)
                                                   : value + (float)rng.uniform(-192, 193) / 64;
         }
-        const int start = rng.uniform(0, 17), n = rng.uniform(0, 41);
+        const int start = rng.uniform(0, 17), n = rng.uniform(0, 64);
         double sum = value, expectedSum = value, directSum = value;
         const int count = vector(&until[start], &disparity[start], n, t, value, tolerance, sum);
         ASSERT_EQ(scalar(&until[start], &disparity[start], n, t, value, tolerance, expectedSum), count);

@@ -14,10 +14,42 @@ void ActiveEstimateMap::reset(Size size)
 {
     size_ = size;
     until_.assign((size_t)size.area(), NO_ESTIMATE);
+    rowTime_.assign((size_t)size.height, 0);
     disparity_.assign((size_t)size.area(), -1.f);
     blocksPerRow_ = divUp(size.width, (int)ESTIMATE_BLOCK);
     blockUntil_.assign((size_t)size.height * blocksPerRow_, 0);
     lastEventTime_.assign((size_t)size.area(), 0);
+}
+
+namespace {
+
+// a - b clamped to [lowest, INT32_MAX], without overflow whatever the two times.
+inline int32_t clampedDifference(int64 a, int64 b, int32_t lowest)
+{
+    if (a >= b)
+    {
+        const uint64 d = (uint64)a - (uint64)b;
+        return d > (uint64)std::numeric_limits<int32_t>::max() ? std::numeric_limits<int32_t>::max() : (int32_t)d;
+    }
+    const uint64 d = (uint64)b - (uint64)a;
+    return d >= (uint64)-(int64)lowest ? lowest : (int32_t)-(int64)d;
+}
+
+}  // namespace
+
+int32_t ActiveEstimateMap::offsetInRow(int y, int64 t) const
+{
+    return clampedDifference(t, rowTime_[(size_t)y], ENDED_LONG_AGO);
+}
+
+void ActiveEstimateMap::moveRowTime(int y, int64 time)
+{
+    int64& rowTime = rowTime_[(size_t)y];
+    int32_t* until = &until_[(size_t)y * size_.width];
+    for (int x = 0; x < size_.width; x++)
+        if (until[x] != NO_ESTIMATE && until[x] != ENDED_LONG_AGO)
+            until[x] = clampedDifference(rowTime + until[x], time, ENDED_LONG_AGO);
+    rowTime = time;
 }
 
 void ActiveEstimateMap::remember(Point r, int64 t, int64 activeFor, float disparity)
@@ -31,9 +63,15 @@ void ActiveEstimateMap::remember(Point r, int64 t, int64 activeFor, float dispar
         return;
     }
     const int64 until = timeAfter(t, activeFor);
-    until_[i] = until;
+    int32_t offset = clampedDifference(until, rowTime_[(size_t)r.y], ENDED_LONG_AGO);
+    if (offset == ENDED_LONG_AGO || offset == std::numeric_limits<int32_t>::max())
+    {
+        moveRowTime(r.y, t);
+        offset = clampedDifference(until, t, ENDED_LONG_AGO);  // INT32_MAX past t at most
+    }
+    until_[i] = offset;
     int64& block = blockUntil_[(size_t)r.y * blocksPerRow_ + r.x / ESTIMATE_BLOCK];
-    block = std::max(block, until);
+    block = std::max(block, rowTime_[(size_t)r.y] + offset);
 }
 
 size_t ActiveEstimateMap::median(Point centre, int rows, int columns, int64 t, std::vector<float>& disparities,
@@ -137,11 +175,12 @@ size_t ActiveEstimateMap::sampledMedian(Point centre, int rows, int columns, int
     {
         const size_t row = (size_t)y * size_.width;
         const int64* blockUntil = &blockUntil_[(size_t)y * blocksPerRow_];
+        const int32_t tInRow = offsetInRow(y, t);
         for (int b = block0; b <= block1; b++)
             if (t < blockUntil[b])
             {
                 const int xa = std::max(x0, b * (int)ESTIMATE_BLOCK), xe = std::min(x1, (b + 1) * (int)ESTIMATE_BLOCK - 1);
-                n += (size_t)gather_(&until_[row + xa], &disparity_[row + xa], xe - xa + 1, t, out + n);
+                n += (size_t)gather_(&until_[row + xa], &disparity_[row + xa], xe - xa + 1, tInRow, out + n);
             }
     }
     disparities.resize(n);
@@ -170,16 +209,17 @@ void ActiveEstimateMap::sumNear(int x0, int x1, int y0, int y1, int64 t, float v
                        pixels * highest < 0x1p15;
     for (int y = y0; y <= y1; y++)
     {
-        const int64* until = &until_[(size_t)y * size_.width + x0];
+        const int32_t* until = &until_[(size_t)y * size_.width + x0];
         const float* disparity = &disparity_[(size_t)y * size_.width + x0];
+        const int32_t tInRow = offsetInRow(y, t);
         if (exact)
         {
-            n += nearSum_(until, disparity, x1 - x0 + 1, t, value, tolerance, sum);
+            n += nearSum_(until, disparity, x1 - x0 + 1, tInRow, value, tolerance, sum);
             continue;
         }
         for (int x = 0; x <= x1 - x0; x++)
         {
-            const bool near = (t < until[x]) & (std::abs(disparity[x] - value) <= tolerance);
+            const bool near = (tInRow < until[x]) & (std::abs(disparity[x] - value) <= tolerance);
             sum += near ? (double)disparity[x] : 0.0;
             n += near;
         }
@@ -189,7 +229,10 @@ void ActiveEstimateMap::sumNear(int x0, int x1, int y0, int y1, int64 t, float v
 bool ActiveEstimateMap::shownAt(int x, int y, double t, float& disparity) const
 {
     const size_t i = (size_t)y * size_.width + x;
-    if (until_[i] == NO_ESTIMATE || !((double)lastEventTime_[i] <= t && t < (double)until_[i]))
+    if (until_[i] == NO_ESTIMATE || until_[i] == ENDED_LONG_AGO)
+        return false;
+    const int64 until = rowTime_[(size_t)y] + until_[i];
+    if (!((double)lastEventTime_[i] <= t && t < (double)until))
         return false;
     disparity = disparity_[i];
     return true;

@@ -9,6 +9,7 @@
 #include "stereo/estimate_gather.hpp"
 
 #include <algorithm>
+#include <cstdint>
 #include <limits>
 #include <vector>
 
@@ -21,8 +22,12 @@ past the other sensor's view, the left-right check, the averaging) and as render
 pixel, the last event's time, its own estimate and the end of that estimate's activity.
 
 The ends and the disparities are two arrays: the scans read a row's ends, and a disparity only where one is
-active. Per ESTIMATE_BLOCK pixels of a row the latest end in the block (it only grows) lets a scan skip the
-blocks where no estimate can be active. Row bands on several threads each write their own rows. */
+active. An end is kept as a 32-bit offset from a time of its row (half the bytes a scan reads); the row's time
+moves, and its offsets with it, when an end no longer fits. So an estimate stays active at most 2^31 - 1 us
+(about 36 minutes) after its event, and a query more than that long before a later event of the row finds the
+estimates that had ended by then inactive. Per ESTIMATE_BLOCK pixels of a row the latest end in the block (it
+only grows) lets a scan skip the blocks where no estimate can be active. Row bands on several threads each
+write their own rows. */
 class CV_EXPORTS ActiveEstimateMap  // exported for opencv_test_event only; not public API
 {
 public:
@@ -52,10 +57,20 @@ public:
 
 private:
     enum { ESTIMATE_BLOCK = 16 };
-    static constexpr int64 NO_ESTIMATE = std::numeric_limits<int64>::min();
+    // Ends no query can find active: none (the last event has no estimate), and one over 2^31 us before the
+    // row's time. A query's offset is at least ENDED_LONG_AGO, so that one compare tells an active estimate.
+    static constexpr int32_t NO_ESTIMATE = std::numeric_limits<int32_t>::min();
+    static constexpr int32_t ENDED_LONG_AGO = NO_ESTIMATE + 1;
+
+    // Time t as an offset from row y's time, clamped to [ENDED_LONG_AGO, INT32_MAX]; in that range an estimate
+    // is active at t exactly when t's offset is below its end's.
+    int32_t offsetInRow(int y, int64 t) const;
+    // Moves row y's time to `time`, and its ends' offsets with it.
+    void moveRowTime(int y, int64 time);
 
     Size size_;
-    std::vector<int64> until_;  // NO_ESTIMATE where the last event has none, so that one compare tells an active one
+    std::vector<int32_t> until_;  // the ends, as offsets from their row's time
+    std::vector<int64> rowTime_;
     std::vector<float> disparity_;
     std::vector<int64> blockUntil_;
     int blocksPerRow_ = 0;

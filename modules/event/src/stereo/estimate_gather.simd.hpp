@@ -6,11 +6,10 @@
 // and chosen at run time by estimate_gather.cpp.
 //
 // A window's activity is random, so the scalar versions write every value and advance their count past the
-// kept ones, with no branch on the data. The times are 64-bit: AVX-512 compares 8 at once and
-// compresses their disparities into a register (stored whole: compressing to memory runs in microcode on some
-// CPUs); AVX2 compares 4 and moves their disparities together with a permutation from a table. Instruction sets
-// without a 64-bit compare (SSE2, NEON's baseline here) take the scalar versions. The selection's values are
-// 32-bit floats: AVX-512 tests 16 at once, AVX2 4 with the same table.
+// kept ones, with no branch on the data. The ends and the selection's values are 32-bit: AVX-512 compares 16 at
+// once and compresses the kept values into a register (stored whole: compressing to memory runs in microcode on
+// some CPUs); AVX2 compares 8 (the selection 4) and moves the kept values of each 4 together with a permutation
+// from a table. Other instruction sets (SSE2, NEON) take the scalar versions.
 
 #include "stereo/estimate_gather.hpp"
 
@@ -26,14 +25,13 @@ namespace event {
 namespace detail {
 CV_CPU_OPTIMIZATION_NAMESPACE_BEGIN
 
-/** The kernels of this instruction set (the scalar code where it has no 64-bit vector compare, under the
-instruction set's name). */
+/** The kernels of this instruction set (the scalar code below AVX2, under the instruction set's name). */
 EstimateGatherKernels estimateGatherKernels();
 
 #ifndef CV_CPU_OPTIMIZATION_DECLARATIONS_ONLY
 
 // The scalar version: the reference, and the vector versions' tail.
-static inline int gatherEstimatesScalar(const int64* until, const float* disparity, int n, int64 t, float* out)
+static inline int gatherEstimatesScalar(const int32_t* until, const float* disparity, int n, int32_t t, float* out)
 {
     int count = 0;
     for (int i = 0; i < n; i++)
@@ -69,7 +67,7 @@ static inline double maskedValue(float v, bool keep)
 }
 
 // Four running sums, so that no addition waits on the one before.
-static inline int nearSumScalar(const int64* until, const float* disparity, int n, int64 t, float value,
+static inline int nearSumScalar(const int32_t* until, const float* disparity, int n, int32_t t, float value,
                                 float tolerance, double& sum)
 {
     int count = 0;
@@ -94,15 +92,15 @@ static inline int nearSumScalar(const int64* until, const float* disparity, int 
 }
 
 #if CV_AVX512_SKX
-static int gatherEstimates(const int64* until, const float* disparity, int n, int64 t, float* out)
+static int gatherEstimates(const int32_t* until, const float* disparity, int n, int32_t t, float* out)
 {
-    const __m512i time = _mm512_set1_epi64(t);
+    const __m512i time = _mm512_set1_epi32(t);
     int count = 0;
-    for (int i = 0; i < n; i += 8)
+    for (int i = 0; i < n; i += 16)
     {
-        const __mmask8 lanes = (__mmask8)(n - i >= 8 ? 0xFFu : (1u << (n - i)) - 1u);
-        const __mmask8 active = _mm512_mask_cmpgt_epi64_mask(lanes, _mm512_maskz_loadu_epi64(lanes, until + i), time);
-        _mm256_storeu_ps(out + count, _mm256_maskz_compress_ps(active, _mm256_maskz_loadu_ps(lanes, disparity + i)));
+        const __mmask16 lanes = (__mmask16)(n - i >= 16 ? 0xFFFFu : (1u << (n - i)) - 1u);
+        const __mmask16 active = _mm512_mask_cmpgt_epi32_mask(lanes, _mm512_maskz_loadu_epi32(lanes, until + i), time);
+        _mm512_storeu_ps(out + count, _mm512_maskz_compress_ps(active, _mm512_maskz_loadu_ps(lanes, disparity + i)));
         count += (int)_mm_popcnt_u32(active);
     }
     return count;
@@ -124,25 +122,26 @@ static size_t valuesInRange(const float* v, size_t n, float lo, float hi, float*
     return count;
 }
 
-static int nearSum(const int64* until, const float* disparity, int n, int64 t, float value, float tolerance,
+static int nearSum(const int32_t* until, const float* disparity, int n, int32_t t, float value, float tolerance,
                    double& sum)
 {
-    const __m512i time = _mm512_set1_epi64(t);
-    const __m256 centre = _mm256_set1_ps(value), reach = _mm256_set1_ps(tolerance);
-    const __m256 magnitude = _mm256_castsi256_ps(_mm256_set1_epi32(0x7FFFFFFF));
+    const __m512i time = _mm512_set1_epi32(t);
+    const __m512 centre = _mm512_set1_ps(value), reach = _mm512_set1_ps(tolerance);
     __m512d total = _mm512_setzero_pd();
     int count = 0;
-    for (int i = 0; i < n; i += 8)
+    for (int i = 0; i < n; i += 16)
     {
-        const __mmask8 lanes = (__mmask8)(n - i >= 8 ? 0xFFu : (1u << (n - i)) - 1u);
-        const __mmask8 active = _mm512_mask_cmpgt_epi64_mask(lanes, _mm512_maskz_loadu_epi64(lanes, until + i), time);
-        const __m256 d = _mm256_maskz_loadu_ps(lanes, disparity + i);
-        const __m256 gap = _mm256_and_ps(_mm256_sub_ps(d, centre), magnitude);
-        const __mmask8 near = _mm256_mask_cmp_ps_mask(active, gap, reach, _CMP_LE_OQ);
-        total = _mm512_mask_add_pd(total, near, total, _mm512_maskz_cvtps_pd(near, d));
+        const __mmask16 lanes = (__mmask16)(n - i >= 16 ? 0xFFFFu : (1u << (n - i)) - 1u);
+        const __mmask16 active = _mm512_mask_cmpgt_epi32_mask(lanes, _mm512_maskz_loadu_epi32(lanes, until + i), time);
+        const __m512 d = _mm512_maskz_loadu_ps(lanes, disparity + i);
+        const __mmask16 near = _mm512_mask_cmp_ps_mask(active, _mm512_abs_ps(_mm512_sub_ps(d, centre)), reach, _CMP_LE_OQ);
+        // (GCC 12 warns of the undefined lanes _mm512_castps512_ps256 and _mm512_cvtps_pd start from.)
+        const __m256 low = _mm256_castpd_ps(_mm512_maskz_extractf64x4_pd(0xFF, _mm512_castps_pd(d), 0));
+        const __m256 high = _mm256_castpd_ps(_mm512_maskz_extractf64x4_pd(0xFF, _mm512_castps_pd(d), 1));
+        total = _mm512_mask_add_pd(total, (__mmask8)near, total, _mm512_maskz_cvtps_pd((__mmask8)near, low));
+        total = _mm512_mask_add_pd(total, (__mmask8)(near >> 8), total, _mm512_maskz_cvtps_pd((__mmask8)(near >> 8), high));
         count += (int)_mm_popcnt_u32(near);
     }
-    // (GCC 12 warns of the undefined lanes _mm512_reduce_add_pd and _mm512_castpd512_pd256 start from.)
     const __m256d half = _mm256_add_pd(_mm512_maskz_extractf64x4_pd(0xFF, total, 0), _mm512_maskz_extractf64x4_pd(0xFF, total, 1));
     const __m128d quarter = _mm_add_pd(_mm256_castpd256_pd128(half), _mm256_extractf128_pd(half, 1));
     sum += _mm_cvtsd_f64(_mm_add_sd(quarter, _mm_unpackhi_pd(quarter, quarter)));
@@ -155,17 +154,20 @@ static const int frontOfMask[16][4] = { { 0, 0, 0, 0 }, { 0, 0, 0, 0 }, { 1, 0, 
                                         { 3, 0, 0, 0 }, { 0, 3, 0, 0 }, { 1, 3, 0, 0 }, { 0, 1, 3, 0 },
                                         { 2, 3, 0, 0 }, { 0, 2, 3, 0 }, { 1, 2, 3, 0 }, { 0, 1, 2, 3 } };
 
-static int gatherEstimates(const int64* until, const float* disparity, int n, int64 t, float* out)
+static int gatherEstimates(const int32_t* until, const float* disparity, int n, int32_t t, float* out)
 {
-    const __m256i time = _mm256_set1_epi64x(t);
+    const __m256i time = _mm256_set1_epi32(t);
     int count = 0, i = 0;
-    for (; i + 4 <= n; i += 4)
+    for (; i + 8 <= n; i += 8)
     {
-        const __m256i live = _mm256_cmpgt_epi64(_mm256_loadu_si256((const __m256i*)(until + i)), time);
-        const int active = _mm256_movemask_pd(_mm256_castsi256_pd(live));
-        const __m128i order = _mm_loadu_si128((const __m128i*)frontOfMask[active]);
-        _mm_storeu_ps(out + count, _mm_permutevar_ps(_mm_loadu_ps(disparity + i), order));
-        count += (int)_mm_popcnt_u32((unsigned)active);
+        const __m256i live = _mm256_cmpgt_epi32(_mm256_loadu_si256((const __m256i*)(until + i)), time);
+        const int active = _mm256_movemask_ps(_mm256_castsi256_ps(live));
+        const __m256 d = _mm256_loadu_ps(disparity + i);
+        const int low = active & 15, high = active >> 4;
+        _mm_storeu_ps(out + count, _mm_permutevar_ps(_mm256_castps256_ps128(d), _mm_loadu_si128((const __m128i*)frontOfMask[low])));
+        count += (int)_mm_popcnt_u32((unsigned)low);
+        _mm_storeu_ps(out + count, _mm_permutevar_ps(_mm256_extractf128_ps(d, 1), _mm_loadu_si128((const __m128i*)frontOfMask[high])));
+        count += (int)_mm_popcnt_u32((unsigned)high);
     }
     return count + gatherEstimatesScalar(until + i, disparity + i, n - i, t, out + count);
 }
@@ -185,23 +187,26 @@ static size_t valuesInRange(const float* v, size_t n, float lo, float hi, float*
     return count + valuesInRangeScalar(v + i, n - i, lo, hi, out + count);
 }
 
-static int nearSum(const int64* until, const float* disparity, int n, int64 t, float value, float tolerance,
+static int nearSum(const int32_t* until, const float* disparity, int n, int32_t t, float value, float tolerance,
                    double& sum)
 {
-    const __m256i time = _mm256_set1_epi64x(t);
-    const __m128 centre = _mm_set1_ps(value), reach = _mm_set1_ps(tolerance);
-    const __m128 magnitude = _mm_castsi128_ps(_mm_set1_epi32(0x7FFFFFFF));
+    const __m256i time = _mm256_set1_epi32(t);
+    const __m256 centre = _mm256_set1_ps(value), reach = _mm256_set1_ps(tolerance);
+    const __m256 magnitude = _mm256_castsi256_ps(_mm256_set1_epi32(0x7FFFFFFF));
     __m256d total = _mm256_setzero_pd();
     int count = 0, i = 0;
-    for (; i + 4 <= n; i += 4)
+    for (; i + 8 <= n; i += 8)
     {
-        const __m256i live = _mm256_cmpgt_epi64(_mm256_loadu_si256((const __m256i*)(until + i)), time);
-        const __m128 d = _mm_loadu_ps(disparity + i);
-        const __m128 close = _mm_cmp_ps(_mm_and_ps(_mm_sub_ps(d, centre), magnitude), reach, _CMP_LE_OQ);
-        // 32-bit lane masks widened to the 64-bit lanes of the doubles
-        const __m256d near = _mm256_and_pd(_mm256_castsi256_pd(live), _mm256_castsi256_pd(_mm256_cvtepi32_epi64(_mm_castps_si128(close))));
-        total = _mm256_add_pd(total, _mm256_and_pd(near, _mm256_cvtps_pd(d)));
-        count += (int)_mm_popcnt_u32((unsigned)_mm256_movemask_pd(near));
+        const __m256i live = _mm256_cmpgt_epi32(_mm256_loadu_si256((const __m256i*)(until + i)), time);
+        const __m256 d = _mm256_loadu_ps(disparity + i);
+        const __m256 close = _mm256_cmp_ps(_mm256_and_ps(_mm256_sub_ps(d, centre), magnitude), reach, _CMP_LE_OQ);
+        const __m256i near = _mm256_and_si256(live, _mm256_castps_si256(close));
+        // each half's 32-bit lane masks widened to the 64-bit lanes of its doubles
+        const __m256d nearLow = _mm256_castsi256_pd(_mm256_cvtepi32_epi64(_mm256_castsi256_si128(near)));
+        const __m256d nearHigh = _mm256_castsi256_pd(_mm256_cvtepi32_epi64(_mm256_extracti128_si256(near, 1)));
+        total = _mm256_add_pd(total, _mm256_and_pd(nearLow, _mm256_cvtps_pd(_mm256_castps256_ps128(d))));
+        total = _mm256_add_pd(total, _mm256_and_pd(nearHigh, _mm256_cvtps_pd(_mm256_extractf128_ps(d, 1))));
+        count += (int)_mm_popcnt_u32((unsigned)_mm256_movemask_ps(_mm256_castsi256_ps(near)));
     }
     const __m128d half = _mm_add_pd(_mm256_castpd256_pd128(total), _mm256_extractf128_pd(total, 1));
     sum += _mm_cvtsd_f64(_mm_add_sd(half, _mm_unpackhi_pd(half, half)));
