@@ -211,7 +211,7 @@ TEST(Event_ActiveEstimateMap, ends_far_from_time_zero_and_across_gaps_beyond_32_
             {
                 ASSERT_EQ(expected[expected.size() / 2], median);
             }
-            longActive += (int)std::count_if(mine.until.begin(), mine.until.end(), [&](int64 u) { return u - q > 1000; });
+            longActive += (int)std::count_if(mine.until.begin(), mine.until.end(), [&](int64 u) { return u > q + 1000; });
 
             const float value = drawDisparity(rng, 1);
             double sum = value, expectedSum = value;
