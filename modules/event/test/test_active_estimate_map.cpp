@@ -211,7 +211,8 @@ TEST(Event_ActiveEstimateMap, ends_far_from_time_zero_and_across_gaps_beyond_32_
             {
                 ASSERT_EQ(expected[expected.size() / 2], median);
             }
-            longActive += (int)std::count_if(mine.until.begin(), mine.until.end(), [&](int64 u) { return u > q + 1000; });
+            longActive += (int)std::count_if(mine.until.begin(), mine.until.end(),
+                                             [&](int64 u) { return u > q + 1000; });
 
             const float value = drawDisparity(rng, 1);
             double sum = value, expectedSum = value;
@@ -229,7 +230,8 @@ TEST(Event_ActiveEstimateMap, ends_far_from_time_zero_and_across_gaps_beyond_32_
 
             // Half the time the pixel just remembered.
             const bool remembered = rng.uniform(0, 2) == 0;
-            const int x = remembered ? r.x : rng.uniform(0, size.width), y = remembered ? r.y : rng.uniform(0, size.height);
+            const int x = remembered ? r.x : rng.uniform(0, size.width);
+            const int y = remembered ? r.y : rng.uniform(0, size.height);
             const size_t i = (size_t)y * size.width + x;
             const bool expectShown = mine.at(x, y) >= 0 && last[i] <= q && mine.active(x, y, q);
             float disparity = -100.f;

@@ -118,10 +118,11 @@ int binOfRank(const uchar* code, size_t n, size_t& k)
     }
 }
 
-// The value of rank k (0-based) among v[0, n), as std::nth_element finds it (v may be reordered). A window holds a few hundred estimates in random order, and nth_element's
-// comparisons branch on each; counting does not: by whole pixels, then by 1/64 px among the values of the pixel
-// that holds rank k, then among that 1/64 px's few values. A bin is a range of values (the bins' ends are exact
-// floats), so the values of one are those the range kernel keeps.
+// The value of rank k (0-based) among v[0, n), as std::nth_element finds it (v may be reordered). A window holds
+// a few hundred estimates in random order, and nth_element's comparisons branch on each; counting does not: by
+// whole pixels, then by 1/64 px among the values of the pixel that holds rank k, then among that 1/64 px's few
+// values. A bin is a range of values (the bins' ends are exact floats), so the values of one are those the range
+// kernel keeps.
 float valueOfRank(float* v, size_t n, size_t k, ValuesInRangeFn valuesInRange)
 {
     // Below MIN_COUNTED values, clearing and scanning the counts costs more than it saves.

@@ -92,13 +92,19 @@ static inline int nearSumScalar(const int32_t* until, const float* disparity, in
 }
 
 #if CV_AVX512_SKX
+// The first min(left, 16) lanes.
+static inline __mmask16 firstLanes(size_t left)
+{
+    return (__mmask16)(left >= 16 ? 0xFFFFu : (1u << left) - 1u);
+}
+
 static int gatherEstimates(const int32_t* until, const float* disparity, int n, int32_t t, float* out)
 {
     const __m512i time = _mm512_set1_epi32(t);
     int count = 0;
     for (int i = 0; i < n; i += 16)
     {
-        const __mmask16 lanes = (__mmask16)(n - i >= 16 ? 0xFFFFu : (1u << (n - i)) - 1u);
+        const __mmask16 lanes = firstLanes((size_t)(n - i));
         const __mmask16 active = _mm512_mask_cmpgt_epi32_mask(lanes, _mm512_maskz_loadu_epi32(lanes, until + i), time);
         _mm512_storeu_ps(out + count, _mm512_maskz_compress_ps(active, _mm512_maskz_loadu_ps(lanes, disparity + i)));
         count += (int)_mm_popcnt_u32(active);
@@ -112,7 +118,7 @@ static size_t valuesInRange(const float* v, size_t n, float lo, float hi, float*
     size_t count = 0;
     for (size_t i = 0; i < n; i += 16)
     {
-        const __mmask16 lanes = (__mmask16)(n - i >= 16 ? 0xFFFFu : (1u << (n - i)) - 1u);
+        const __mmask16 lanes = firstLanes((size_t)(n - i));
         const __m512 value = _mm512_maskz_loadu_ps(lanes, v + i);
         const __mmask16 kept = _mm512_mask_cmp_ps_mask(_mm512_mask_cmp_ps_mask(lanes, value, low, _CMP_GE_OQ), value,
                                                        high, _CMP_LT_OQ);
@@ -131,18 +137,21 @@ static int nearSum(const int32_t* until, const float* disparity, int n, int32_t 
     int count = 0;
     for (int i = 0; i < n; i += 16)
     {
-        const __mmask16 lanes = (__mmask16)(n - i >= 16 ? 0xFFFFu : (1u << (n - i)) - 1u);
+        const __mmask16 lanes = firstLanes((size_t)(n - i));
         const __mmask16 active = _mm512_mask_cmpgt_epi32_mask(lanes, _mm512_maskz_loadu_epi32(lanes, until + i), time);
         const __m512 d = _mm512_maskz_loadu_ps(lanes, disparity + i);
-        const __mmask16 near = _mm512_mask_cmp_ps_mask(active, _mm512_abs_ps(_mm512_sub_ps(d, centre)), reach, _CMP_LE_OQ);
+        const __mmask16 near =
+            _mm512_mask_cmp_ps_mask(active, _mm512_abs_ps(_mm512_sub_ps(d, centre)), reach, _CMP_LE_OQ);
         // (GCC 12 warns of the undefined lanes _mm512_castps512_ps256 and _mm512_cvtps_pd start from.)
         const __m256 low = _mm256_castpd_ps(_mm512_maskz_extractf64x4_pd(0xFF, _mm512_castps_pd(d), 0));
         const __m256 high = _mm256_castpd_ps(_mm512_maskz_extractf64x4_pd(0xFF, _mm512_castps_pd(d), 1));
         total = _mm512_mask_add_pd(total, (__mmask8)near, total, _mm512_maskz_cvtps_pd((__mmask8)near, low));
-        total = _mm512_mask_add_pd(total, (__mmask8)(near >> 8), total, _mm512_maskz_cvtps_pd((__mmask8)(near >> 8), high));
+        total = _mm512_mask_add_pd(total, (__mmask8)(near >> 8), total,
+                                   _mm512_maskz_cvtps_pd((__mmask8)(near >> 8), high));
         count += (int)_mm_popcnt_u32(near);
     }
-    const __m256d half = _mm256_add_pd(_mm512_maskz_extractf64x4_pd(0xFF, total, 0), _mm512_maskz_extractf64x4_pd(0xFF, total, 1));
+    const __m256d half =
+        _mm256_add_pd(_mm512_maskz_extractf64x4_pd(0xFF, total, 0), _mm512_maskz_extractf64x4_pd(0xFF, total, 1));
     const __m128d quarter = _mm_add_pd(_mm256_castpd256_pd128(half), _mm256_extractf128_pd(half, 1));
     sum += _mm_cvtsd_f64(_mm_add_sd(quarter, _mm_unpackhi_pd(quarter, quarter)));
     return count;
@@ -154,6 +163,13 @@ static const int frontOfMask[16][4] = { { 0, 0, 0, 0 }, { 0, 0, 0, 0 }, { 1, 0, 
                                         { 3, 0, 0, 0 }, { 0, 3, 0, 0 }, { 1, 3, 0, 0 }, { 0, 1, 3, 0 },
                                         { 2, 3, 0, 0 }, { 0, 2, 3, 0 }, { 1, 2, 3, 0 }, { 0, 1, 2, 3 } };
 
+// Stores the lanes of `values` set in the 4-bit `kept` to out, in order (a whole vector); returns their count.
+static inline int packFront(__m128 values, int kept, float* out)
+{
+    _mm_storeu_ps(out, _mm_permutevar_ps(values, _mm_loadu_si128((const __m128i*)frontOfMask[kept])));
+    return _mm_popcnt_u32((unsigned)kept);
+}
+
 static int gatherEstimates(const int32_t* until, const float* disparity, int n, int32_t t, float* out)
 {
     const __m256i time = _mm256_set1_epi32(t);
@@ -163,11 +179,8 @@ static int gatherEstimates(const int32_t* until, const float* disparity, int n, 
         const __m256i live = _mm256_cmpgt_epi32(_mm256_loadu_si256((const __m256i*)(until + i)), time);
         const int active = _mm256_movemask_ps(_mm256_castsi256_ps(live));
         const __m256 d = _mm256_loadu_ps(disparity + i);
-        const int low = active & 15, high = active >> 4;
-        _mm_storeu_ps(out + count, _mm_permutevar_ps(_mm256_castps256_ps128(d), _mm_loadu_si128((const __m128i*)frontOfMask[low])));
-        count += (int)_mm_popcnt_u32((unsigned)low);
-        _mm_storeu_ps(out + count, _mm_permutevar_ps(_mm256_extractf128_ps(d, 1), _mm_loadu_si128((const __m128i*)frontOfMask[high])));
-        count += (int)_mm_popcnt_u32((unsigned)high);
+        count += packFront(_mm256_castps256_ps128(d), active & 15, out + count);
+        count += packFront(_mm256_extractf128_ps(d, 1), active >> 4, out + count);
     }
     return count + gatherEstimatesScalar(until + i, disparity + i, n - i, t, out + count);
 }
@@ -179,10 +192,8 @@ static size_t valuesInRange(const float* v, size_t n, float lo, float hi, float*
     for (; i + 4 <= n; i += 4)
     {
         const __m128 value = _mm_loadu_ps(v + i);
-        const int kept = _mm_movemask_ps(_mm_and_ps(_mm_cmp_ps(value, low, _CMP_GE_OQ), _mm_cmp_ps(value, high, _CMP_LT_OQ)));
-        const __m128i order = _mm_loadu_si128((const __m128i*)frontOfMask[kept]);
-        _mm_storeu_ps(out + count, _mm_permutevar_ps(value, order));
-        count += (size_t)_mm_popcnt_u32((unsigned)kept);
+        const __m128 inside = _mm_and_ps(_mm_cmp_ps(value, low, _CMP_GE_OQ), _mm_cmp_ps(value, high, _CMP_LT_OQ));
+        count += (size_t)packFront(value, _mm_movemask_ps(inside), out + count);
     }
     return count + valuesInRangeScalar(v + i, n - i, lo, hi, out + count);
 }
