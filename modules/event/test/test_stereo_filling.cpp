@@ -68,6 +68,46 @@ TEST(StereoEventMatcher_Filling, puts_the_events_one_camera_misses_where_the_sur
     EXPECT_GE(matchingRate(filled), matchingRate(own) + 10);
 }
 
+// A surface found for one event serves the events after it nearby (fillReuseTime): a window moved by a few
+// pixels and milliseconds. Only outputs change, and only a little: the same decisions as every event finding its
+// own surface (the filling changes no decision either), most changed outputs a fraction of a pixel apart (a
+// median of a slightly different window), and the matching rate within half a point.
+TEST(StereoEventMatcher_Filling, reused_surfaces_change_no_decision_and_few_outputs_by_more_than_a_pixel)
+{
+    const SceneRun own = runScene("walking_pair", 1500, [](StereoEventMatcher& m) { m.setFillReuseTime(0); });
+    const SceneRun reused = runScene("walking_pair", 1500, [](StereoEventMatcher&) {});
+    ASSERT_EQ(own.disparity.size(), reused.disparity.size());
+    int64 moved = 0, far = 0;
+    for (size_t i = 0; i < own.disparity.size(); i++)
+    {
+        ASSERT_EQ(own.lifetime[i], reused.lifetime[i]) << "event " << i;
+        ASSERT_EQ(own.confidence[i], reused.confidence[i]) << "event " << i;
+        const int outputFlags = STEREO_FILLED | STEREO_HAS_DISPARITY;
+        ASSERT_EQ(own.flags[i] & ~outputFlags, reused.flags[i] & ~outputFlags) << "event " << i;
+        const float a = own.disparity[i], b = reused.disparity[i];
+        moved += a != b;
+        far += (a < 0) != (b < 0) || std::abs(a - b) > 1.f;
+    }
+    const int64 events = (int64)own.disparity.size();
+    EXPECT_GT(moved, 0) << "the surfaces were reused";
+    EXPECT_LT(far, events / 50) << "filled or not, or more than a pixel apart";
+    EXPECT_NEAR(matchingRate(reused), matchingRate(own), 0.5);
+}
+
+TEST(StereoEventMatcher_Filling, reuse_time_is_checked_and_stored)
+{
+    Ptr<StereoEventMatcher> m = StereoEventMatcher::create();
+    EXPECT_EQ(m->getFillReuseTime(), 5000);
+    EXPECT_THROW(m->setFillReuseTime(-1), cv::Exception);
+    EXPECT_THROW(m->setFillReuseTime(1e6 + 1), cv::Exception);
+    m->setFillReuseTime(2500);
+    FileStorage out(".yml", FileStorage::WRITE | FileStorage::MEMORY);
+    m->write(out);
+    Ptr<StereoEventMatcher> b = StereoEventMatcher::create();
+    b->read(FileStorage(out.releaseAndGetString(), FileStorage::READ | FileStorage::MEMORY).root());
+    EXPECT_EQ(b->getFillReuseTime(), 2500);
+}
+
 TEST(StereoEventMatcher_Filling, radius_is_checked_and_stored)
 {
     Ptr<StereoEventMatcher> m = StereoEventMatcher::create();

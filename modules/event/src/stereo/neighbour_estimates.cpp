@@ -127,16 +127,14 @@ float StereoEventMatcherImpl::averagedDisparity(int c, Point r, int64 t, float o
 // FILL_TIME, say where they are. Only the events' own estimates support it, never filled ones, so that a fill
 // does not spread by itself.
 bool StereoEventMatcherImpl::filledDisparity(int c, Point r, int64 t, MatchScratch& s, float own, float confidence,
-                                             float& disparity) const
+                                             float& disparity)
 {
     const int radius = params_.fillRadius;
-    float median = 0;
-    // Every other row: an edge's estimates repeat from row to row, and the window's scan is what filling costs.
-    if (radius == 0 ||
-        confidentEstimates_[c].sampledMedian(r, radius, radius, FILL_ROW_STEP, t, s.disparities, median) < (size_t)FILL_SUPPORT)
+    if (radius == 0)
         return false;
-    const float agreeing = agreeingShare(s.disparities, median);
-    if (agreeing < FILL_AGREEING)
+    const FillSurfaceCache::Surface surface = fillSurface(c, r, t, s);
+    const float median = surface.median, agreeing = surface.agreeing;
+    if (surface.support < FILL_SUPPORT || agreeing < FILL_AGREEING)
         return false;
     const float gap = std::abs(own - median);
     if (own >= 0 && confidence >= FILL_BELOW_CONFIDENCE && gap > FILL_REFINE_GAP)
@@ -153,6 +151,27 @@ bool StereoEventMatcherImpl::filledDisparity(int c, Point r, int64 t, MatchScrat
     }
     disparity = median;
     return true;
+}
+
+FillSurfaceCache::Surface StereoEventMatcherImpl::fillSurface(int c, Point r, int64 t, MatchScratch& s)
+{
+    // The events of an edge fire close together, and the surfaces of neighbours a few pixels and milliseconds
+    // apart are nearly the same (at the defaults, a 41 x 41 window moved by a fifth of its radius at most). Only
+    // a surface that could fill is reused, so that one found before the estimates around it arrived does not
+    // hold them off.
+    const FillSurfaceCache::Surface* found = fillSurfaces_[c].find(r, t, params_.fillReuseTime, FILL_SUPPORT);
+    if (found)
+        return *found;
+    FillSurfaceCache::Surface surface{ t, 0.f, 0.f, 0 };
+    // Every other row: an edge's estimates repeat from row to row, and the window's scan is what filling costs.
+    const int radius = params_.fillRadius;
+    surface.support = (int)confidentEstimates_[c].sampledMedian(r, radius, radius, FILL_ROW_STEP, t, s.disparities,
+                                                                surface.median);
+    if (surface.support >= FILL_SUPPORT)
+        surface.agreeing = agreeingShare(s.disparities, surface.median);
+    if (params_.fillReuseTime > 0)
+        fillSurfaces_[c].store(r, surface);
+    return surface;
 }
 
 void StereoEventMatcherImpl::rememberConfident(int c, Point r, int64 t, float disparity, float confidence)

@@ -93,6 +93,7 @@ void StereoEventMatcherImpl::reset()
         estimators_[c]->reset();
         estimates_[c].reset(params_.sensorSize);
         confidentEstimates_[c].reset(params_.sensorSize);
+        fillSurfaces_[c].reset(params_.sensorSize);
         pendingEvents_[c].assign((size_t)params_.sensorSize.area() * 2, 0);
     }
     input_.restart();

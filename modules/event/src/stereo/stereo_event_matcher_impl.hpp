@@ -9,6 +9,7 @@
 #include "lifetime/row_band_lifetime_estimator.hpp"
 #include "stereo/active_estimate_map.hpp"
 #include "stereo/descriptor_cost.hpp"
+#include "stereo/fill_surface_cache.hpp"
 #include "stereo/row_band_scheduler.hpp"
 #include "stereo/stereo_event_input.hpp"
 #include "stereo/stereo_matcher_params.hpp"
@@ -130,6 +131,8 @@ public:
     void setAveragingRadius(int px) CV_OVERRIDE { params_.setAveragingRadius(px); }
     int getFillRadius() const CV_OVERRIDE { return params_.fillRadius; }
     void setFillRadius(int px) CV_OVERRIDE { params_.setFillRadius(px); }
+    double getFillReuseTime() const CV_OVERRIDE { return (double)params_.fillReuseTime; }
+    void setFillReuseTime(double us) CV_OVERRIDE { params_.setFillReuseTime(us); }
     double getLookAhead() const CV_OVERRIDE { return (double)params_.lookAhead; }
     void setLookAhead(double us) CV_OVERRIDE { params_.setLookAhead(us); }
     double getFixedInterval() const CV_OVERRIDE { return (double)params_.fixedInterval; }
@@ -296,13 +299,19 @@ private:
 
     // Filling (setFillRadius): the surface's disparity around an event of sensor c at r, the median of the
     // confident estimates (rememberConfident) active at t within the fill radius, in every FILL_ROW_STEP-th
-    // row, when there are FILL_SUPPORT of them and FILL_AGREEING of them lie within a pixel of it, replaces
-    // the event's own estimate `own` (-1: none) of confidence `confidence` when the latter is missing or less
-    // confident than FILL_BELOW_CONFIDENCE, lies within FILL_REFINE_GAP of the surface's (a median of many is
-    // the finer estimate), or lies more than FILL_OUTLIER_GAP from it where FILL_OUTLIER_AGREEING of the
-    // surface lie within a pixel of its median and a narrow band of it (FILL_NARROW_COLUMNS either side, all
-    // the rows: a pole, a limb in front of the body) does not support `own`. False: the event keeps `own`.
-    bool filledDisparity(int c, Point r, int64 t, MatchScratch& s, float own, float confidence, float& disparity) const;
+    // row (or of those around an event shortly before it nearby: fillSurface), when there are FILL_SUPPORT of
+    // them and FILL_AGREEING of them lie within a pixel of it, replaces the event's own estimate `own` (-1: none)
+    // of confidence `confidence` when the latter is missing or less confident than FILL_BELOW_CONFIDENCE, lies
+    // within FILL_REFINE_GAP of the surface's (a median of many is the finer estimate), or lies more than
+    // FILL_OUTLIER_GAP from it where FILL_OUTLIER_AGREEING of the surface lie within a pixel of its median and a
+    // narrow band of it (FILL_NARROW_COLUMNS either side, all the rows: a pole, a limb in front of the body) does
+    // not support `own`. False: the event keeps `own`.
+    bool filledDisparity(int c, Point r, int64 t, MatchScratch& s, float own, float confidence, float& disparity);
+    // The surface around the event at r of sensor c at time t: one found for an event shortly before it nearby
+    // (params_.fillReuseTime, fillSurfaces_), or the window's own (kept for the events after it).
+    FillSurfaceCache::Surface fillSurface(int c, Point r, int64 t, MatchScratch& s);
+    static_assert((int)FillSurfaceCache::ROWS <= (int)PRIOR_RADIUS,
+                  "a reused surface must lie within the rows an event's processing reaches");
     // Keeps an event's own estimate for filling when it is at least FILL_SUPPORT_CONFIDENCE confident.
     void rememberConfident(int c, Point r, int64 t, float disparity, float confidence);
     static constexpr float FILL_BELOW_CONFIDENCE = 0.15f, FILL_SUPPORT_CONFIDENCE = 0.3f, FILL_AGREEING = 0.5f;
@@ -356,6 +365,7 @@ private:
     ZouDescriptorMap maps_[2];
     ActiveEstimateMap estimates_[2];  // each event's own estimate, as its neighbours read it
     ActiveEstimateMap confidentEstimates_[2];  // the confident ones among them, for filling
+    FillSurfaceCache fillSurfaces_[2];  // the surfaces filling found, for the events after them (fillReuseTime)
     int64 coldStartEnd_ = 0;  // the end of the cold start: see admit()
     // The cost kernel for this CPU (candidates' costs and window masses), fetched once.
     DescriptorRectSadBatchFn rectSadBatch_ = descriptorRectSadBatchFunction();

@@ -185,6 +185,11 @@ void StereoMatcherParams::setFillRadius(int px)
     fillRadius = px;
 }
 
+void StereoMatcherParams::setFillReuseTime(double us)
+{
+    fillReuseTime = upToOneSecond(us, "fill reuse time", "every event finds its own surface");
+}
+
 void StereoMatcherParams::setLookAhead(double us)
 {
     lookAhead = upToOneSecond(us, "look-ahead", "each event is decided when it arrives");
@@ -229,9 +234,10 @@ void StereoMatcherParams::write(FileStorage& fs) const
        << "minConfidence" << minConfidence << "matchedLifetimeConfidence" << matchedLifetimeConfidence
        << "lifetimeCopyConfidence" << lifetimeCopyConfidence << "maxLifetimeCopies" << maxLifetimeCopies
        << "priorTolerance" << priorTolerance << "recencyWeight" << recencyWeight << "recencyTime" << (double)recencyTime
-       << "averagingRadius" << averagingRadius << "fillRadius" << fillRadius << "lookAhead" << (double)lookAhead << "fixedInterval" << (double)fixedInterval
-       << "maxLifetime" << (double)maxLifetime << "activeDistance"
-       << activeDistance << "noiseActiveTime" << (double)noiseActiveTime;
+       << "averagingRadius" << averagingRadius << "fillRadius" << fillRadius << "fillReuseTime" << (double)fillReuseTime
+       << "lookAhead" << (double)lookAhead << "fixedInterval" << (double)fixedInterval
+       << "maxLifetime" << (double)maxLifetime << "activeDistance" << activeDistance
+       << "noiseActiveTime" << (double)noiseActiveTime;
 }
 
 void StereoMatcherParams::read(const FileNode& fn)
@@ -264,6 +270,7 @@ void StereoMatcherParams::read(const FileNode& fn)
     setRecencyTime(num("recencyTime", (double)recencyTime));
     setAveragingRadius((int)num("averagingRadius", averagingRadius));
     setFillRadius((int)num("fillRadius", fillRadius));
+    setFillReuseTime(num("fillReuseTime", (double)fillReuseTime));
     setLookAhead(num("lookAhead", (double)lookAhead));
     setFixedInterval(num("fixedInterval", (double)fixedInterval));
     setMaxLifetime(num("maxLifetime", (double)maxLifetime));

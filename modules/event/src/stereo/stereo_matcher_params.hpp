@@ -37,6 +37,7 @@ struct StereoMatcherParams
     int fillRadius = 20;
     // Times in microseconds.
     int64 recencyTime = 10000, lookAhead = 10000, fixedInterval = 10000, maxLifetime = 100000, noiseActiveTime = 25000;
+    int64 fillReuseTime = 5000;
     double activeDistance = 2.5;
     int numThreads = 1;  // not stored: a property of the machine, not of the method
 
@@ -68,6 +69,7 @@ struct StereoMatcherParams
     void setRecencyTime(double us);
     void setAveragingRadius(int px);
     void setFillRadius(int px);
+    void setFillReuseTime(double us);
     void setLookAhead(double us);
     void setFixedInterval(double us);
     void setMaxLifetime(double us);

@@ -242,6 +242,16 @@ public:
     where it is. See doc/stereo.md, "The method". */
     CV_WRAP virtual int getFillRadius() const = 0;
     CV_WRAP virtual void setFillRadius(int px) = 0;
+    /** @brief Filling: how long [us] the surface found around one event serves the events after it nearby
+    (default 5000; 0..1e6; 0: every event's surface is the median of its own window). An event takes the surface
+    found for an earlier event in the same stretch of 8 columns (x / 8) of its own row or of the 4 rows either side,
+    less than this long before it, when that surface had enough estimates to fill; otherwise it takes the median
+    of its own window, which later events may take in turn. The window's median is most of what filling costs, and
+    on an edge the windows of events a few pixels and milliseconds apart hold nearly the same estimates: this
+    moves the output of some events by the difference, not the matches (doc/stereo.md, "The method"). The
+    results stay those of one thread whatever setNumThreads() says. */
+    CV_WRAP virtual double getFillReuseTime() const = 0;
+    CV_WRAP virtual void setFillReuseTime(double us) = 0;
     /** @brief Look-ahead L [us] (COUPLED, DECOUPLED, FIXED_INTERVAL; default 10000; 0..1e6). process() puts
     each event into its sensor's map when it arrives, but matches it (and gives it its lifetime) only once an
     event more than L later has arrived, or at the end of the packet: a counterpart that fires up to L later
