@@ -87,6 +87,16 @@ inline EventAndTriggerTally tallyEventsAndTriggers(cv::event::EventCapture& cap)
     return tally;
 }
 
+// A new StereoEventMatcher that read what m wrote (FileStorage in memory).
+inline cv::Ptr<cv::event::StereoEventMatcher> writtenAndReadBack(const cv::event::StereoEventMatcher& m)
+{
+    cv::FileStorage out(".yml", cv::FileStorage::WRITE | cv::FileStorage::MEMORY);
+    m.write(out);
+    cv::Ptr<cv::event::StereoEventMatcher> b = cv::event::StereoEventMatcher::create();
+    b->read(cv::FileStorage(out.releaseAndGetString(), cv::FileStorage::READ | cv::FileStorage::MEMORY).root());
+    return b;
+}
+
 /** Writes @p content to a fresh temporary file with the given suffix and returns its path. */
 inline std::string writeTempFile(const std::string& content, const std::string& suffix)
 {

@@ -57,10 +57,7 @@ TEST(StereoEventMatcher_Averaging, radius_is_checked_and_stored)
     EXPECT_THROW(m->setAveragingRadius(-1), cv::Exception);
     EXPECT_THROW(m->setAveragingRadius(6), cv::Exception);
     m->setAveragingRadius(2);
-    FileStorage out(".yml", FileStorage::WRITE | FileStorage::MEMORY);
-    m->write(out);
-    Ptr<StereoEventMatcher> b = StereoEventMatcher::create();
-    b->read(FileStorage(out.releaseAndGetString(), FileStorage::READ | FileStorage::MEMORY).root());
+    Ptr<StereoEventMatcher> b = writtenAndReadBack(*m);
     EXPECT_EQ(b->getAveragingRadius(), 2);
 }
 

@@ -101,10 +101,7 @@ TEST(StereoEventMatcher_Filling, reuse_time_is_checked_and_stored)
     EXPECT_THROW(m->setFillReuseTime(-1), cv::Exception);
     EXPECT_THROW(m->setFillReuseTime(1e6 + 1), cv::Exception);
     m->setFillReuseTime(2500);
-    FileStorage out(".yml", FileStorage::WRITE | FileStorage::MEMORY);
-    m->write(out);
-    Ptr<StereoEventMatcher> b = StereoEventMatcher::create();
-    b->read(FileStorage(out.releaseAndGetString(), FileStorage::READ | FileStorage::MEMORY).root());
+    Ptr<StereoEventMatcher> b = writtenAndReadBack(*m);
     EXPECT_EQ(b->getFillReuseTime(), 2500);
 }
 
@@ -115,10 +112,7 @@ TEST(StereoEventMatcher_Filling, radius_is_checked_and_stored)
     EXPECT_THROW(m->setFillRadius(-1), cv::Exception);
     EXPECT_THROW(m->setFillRadius(31), cv::Exception);
     m->setFillRadius(7);
-    FileStorage out(".yml", FileStorage::WRITE | FileStorage::MEMORY);
-    m->write(out);
-    Ptr<StereoEventMatcher> b = StereoEventMatcher::create();
-    b->read(FileStorage(out.releaseAndGetString(), FileStorage::READ | FileStorage::MEMORY).root());
+    Ptr<StereoEventMatcher> b = writtenAndReadBack(*m);
     EXPECT_EQ(b->getFillRadius(), 7);
 }
 
