@@ -324,11 +324,12 @@ void StereoEventMatcherImpl::recencyShares(const ZouDescriptorMap& other, const 
     {
         const uchar* const active = other.activeRow(y, p);
         const int64* const times = other.eventTimeRow(y, p);
-        // |t - time| in unsigned arithmetic: exact for any two int64 times, without overflow.
+        // |t - time| in unsigned arithmetic: exact for any two int64 times, without overflow. An inactive pixel's
+        // gap is all ones (the largest) by a mask, not a branch: which pixels are active is random.
         for (int x = x0; x <= x1; x++)
         {
             const uint64 apart = t >= times[x] ? (uint64)t - (uint64)times[x] : (uint64)times[x] - (uint64)t;
-            gap[x] = std::min(gap[x], active[x] ? apart : std::numeric_limits<uint64>::max());
+            gap[x] = std::min(gap[x], apart | ((uint64)(active[x] == 0) * std::numeric_limits<uint64>::max()));
         }
     }
     float* const share = s.recencyShare.data();
@@ -336,7 +337,9 @@ void StereoEventMatcherImpl::recencyShares(const ZouDescriptorMap& other, const 
     {
         const int x = r.x + sign * (params_.minDisparity + candidates[i]);
         const uint64 nearest = std::min(gap[x], std::min(gap[std::max(x0, x - 1)], gap[std::min(x1, x + 1)]));
-        share[i] = nearest >= (uint64)params_.recencyTime ? 1.f : (float)((double)nearest / (double)params_.recencyTime);
+        // Capped at recencyTime (at most 1e6 us) first: the share is then 1 there exactly, without a branch.
+        const int64 capped = (int64)std::min(nearest, (uint64)params_.recencyTime);
+        share[i] = (float)((double)capped / (double)params_.recencyTime);
     }
 }
 
