@@ -41,6 +41,26 @@ PERF_TEST_P(Event_StereoMatcher_Window, two_planes,
     SANITY_CHECK_NOTHING();
 }
 
+// COUPLED at the defaults with every event finding its own fill surface (0) and with the surfaces reused for the
+// default 5 ms (setFillReuseTime).
+typedef TestBaseWithParam<double> Event_StereoMatcher_FillReuse;
+
+PERF_TEST_P(Event_StereoMatcher_FillReuse, two_planes, testing::Values(0.0, 5000.0))
+{
+    std::vector<Event> warmUp, window;
+    const Size size = twoPlanesWindows(warmUp, window);
+    Ptr<StereoEventMatcher> m = StereoEventMatcher::create(size, STEREO_COUPLED);
+    m->setFillReuseTime(GetParam());
+    Mat disparity, lifetime;
+    TEST_CYCLE()
+    {
+        m->reset();
+        m->process(warmUp, disparity, lifetime);
+        m->process(window, disparity, lifetime);
+    }
+    SANITY_CHECK_NOTHING();
+}
+
 PERF_TEST(Event_FrameStereoMatcher_Window, two_planes)
 {
     std::vector<Event> warmUp, window;
