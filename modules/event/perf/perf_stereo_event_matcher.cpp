@@ -18,6 +18,15 @@ Size twoPlanesWindows(std::vector<Event>& warmUp, std::vector<Event>& window)
     return sim->getSensorSize();
 }
 
+// What each cycle times: the warm-up and the window through the matcher from its reset.
+void processFromReset(StereoEventMatcher& m, const std::vector<Event>& warmUp, const std::vector<Event>& window)
+{
+    Mat disparity, lifetime;
+    m.reset();
+    m.process(warmUp, disparity, lifetime);
+    m.process(window, disparity, lifetime);
+}
+
 // Per mode at the defaults, then COUPLED with the cost windows on every other and every third row
 // (setCostRowStep).
 typedef TestBaseWithParam<tuple<int, int>> Event_StereoMatcher_Window;
@@ -31,13 +40,7 @@ PERF_TEST_P(Event_StereoMatcher_Window, two_planes,
     const Size size = twoPlanesWindows(warmUp, window);
     Ptr<StereoEventMatcher> m = StereoEventMatcher::create(size, get<0>(GetParam()));
     m->setCostRowStep(get<1>(GetParam()));
-    Mat disparity, lifetime;
-    TEST_CYCLE()
-    {
-        m->reset();
-        m->process(warmUp, disparity, lifetime);
-        m->process(window, disparity, lifetime);
-    }
+    TEST_CYCLE() processFromReset(*m, warmUp, window);
     SANITY_CHECK_NOTHING();
 }
 
@@ -51,13 +54,7 @@ PERF_TEST_P(Event_StereoMatcher_FillReuse, two_planes, testing::Values(0.0, 5000
     const Size size = twoPlanesWindows(warmUp, window);
     Ptr<StereoEventMatcher> m = StereoEventMatcher::create(size, STEREO_COUPLED);
     m->setFillReuseTime(GetParam());
-    Mat disparity, lifetime;
-    TEST_CYCLE()
-    {
-        m->reset();
-        m->process(warmUp, disparity, lifetime);
-        m->process(window, disparity, lifetime);
-    }
+    TEST_CYCLE() processFromReset(*m, warmUp, window);
     SANITY_CHECK_NOTHING();
 }
 
