@@ -508,11 +508,7 @@ TEST(StereoEventMatcher, parameters_round_trip_through_FileStorage)
     a->setNoiseActiveTime(4000);
     a->getLifetimeEstimator(0)->setWindowSize(7);
     a->setCalibration(StereoCalibration::fromRectified(Size(128, 96), 150, 0.2));
-    FileStorage out(".yml", FileStorage::WRITE | FileStorage::MEMORY);
-    a->write(out);
-    const std::string text = out.releaseAndGetString();
-    Ptr<StereoEventMatcher> b = StereoEventMatcher::create();
-    b->read(FileStorage(text, FileStorage::READ | FileStorage::MEMORY).root());
+    Ptr<StereoEventMatcher> b = writtenAndReadBack(*a);
     EXPECT_EQ(b->getMode(), (int)STEREO_DECOUPLED);
     EXPECT_EQ(b->getSensorSize(), Size(128, 96));
     EXPECT_EQ(b->getMinDisparity(), 2);
