@@ -200,6 +200,19 @@ if [ -d "$tum" ]; then ballArgs=(--recording="$tum/pendulum_left_30cm_2.tsv.txt"
 while IFS= read -r row; do
   expect doc/benchmarks.md "$row" "ball_motion_check:$(cut -d'|' -f2,3 <<< "$row")"
 done < <("$build/perf/ball_motion_check" "${ballArgs[@]}" | grep -E '^[|] (simulated|TUM)')
+# What row bands can give at most (perf/row_band_ceiling, doc/benchmarks.md): every row of both sensors' runs.
+for sensor in DAVIS240 DAVIS346; do
+  "$build/perf/row_band_ceiling" --scenes=boxes,boxes_fast,walking,walking_near,low_contrast --sensor=$sensor \
+    --duration-ms=1000 --bands=2,4,7,10,16 > "$work/ceiling_$sensor.txt" 2> /dev/null &
+done
+wait
+ceilingRows=$(grep -hE '^[|] [a-z_]+ [(]sim' "$work"/ceiling_DAVIS*.txt || true)
+if [ "$(grep -c . <<< "$ceilingRows")" -ne 10 ]; then
+  notQuoted doc/benchmarks.md "10 rows" "row_band_ceiling printed $(grep -c . <<< "$ceilingRows") rows of the scenes"
+fi
+while IFS= read -r row; do
+  if [ -n "$row" ]; then expect doc/benchmarks.md "$row" "row_band_ceiling:$(cut -d'|' -f2 <<< "$row")"; fi
+done <<< "$ceilingRows"
 
 if [ ! -d "$tum" ]; then
   # The real recordings' figures need them; the simulated ones above are checked (a failure there is one).
