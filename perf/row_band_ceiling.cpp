@@ -38,6 +38,15 @@ struct Recording
     Size size;
     int64 events = 0;
     std::vector<std::vector<int>> windowRows;  // each window's event rows, in time order
+
+    void addWindow(const std::vector<Event>& window)
+    {
+        std::vector<int> rows;
+        for (const Event& e : window)
+            rows.push_back(e.y);
+        events += (int64)rows.size();
+        windowRows.push_back(std::move(rows));
+    }
 };
 
 Recording simulated(const std::string& scene, double durationMs, int sensorModel)
@@ -51,11 +60,7 @@ Recording simulated(const std::string& scene, double durationMs, int sensorModel
         std::vector<Event> ev;
         Mat truth;
         sim->generate(std::min(t, durationMs * 1000), ev, truth);
-        std::vector<int> rows;
-        for (const Event& e : ev)
-            rows.push_back(e.y);
-        r.events += (int64)rows.size();
-        r.windowRows.push_back(std::move(rows));
+        r.addWindow(ev);
     }
     return r;
 }
@@ -71,13 +76,7 @@ Recording recorded(const std::string& path)
     r.size = cap.getSensorSize();
     std::vector<Event> ev;
     while (cap.read(ev))
-    {
-        std::vector<int> rows;
-        for (const Event& e : ev)
-            rows.push_back(e.y);
-        r.events += (int64)rows.size();
-        r.windowRows.push_back(std::move(rows));
-    }
+        r.addWindow(ev);
     return r;
 }
 
