@@ -57,9 +57,8 @@ inline unsigned descriptorMass(const uchar* d)
     return (unsigned)((sum * lanes) >> 48);
 }
 
-// std::lround of a non-negative x below 2^53, inline: its whole part converts exactly, and so does the fraction
-// x minus it, so halves round up as lround rounds them (away from zero). The library call was a sixtieth of the
-// matcher's instructions.
+// std::lround of a non-negative x below 2^53 without a library call (one per candidate and window size): its whole
+// part converts exactly, and so does the fraction x minus it, so halves round up as lround rounds them.
 inline uint64 roundNonNegative(double x)
 {
     CV_DbgAssert(x >= 0 && x < 0x1p53);
