@@ -59,4 +59,17 @@ inline void applySimulatorSettings(cv::event::SimulatorSettings& s, const std::s
     }
 }
 
+/** The simulator of @p scene on @p sensorModel with the --sensor-set list @p list applied (as built when it is
+    empty); throws as applySimulatorSettings does. */
+inline cv::Ptr<cv::event::StereoEventSimulator> simulatorWithSettings(const std::string& scene, int sensorModel,
+                                                                     const std::string& list)
+{
+    cv::Ptr<cv::event::StereoEventSimulator> sim = cv::event::StereoEventSimulator::create(scene, sensorModel);
+    if (list.empty())
+        return sim;
+    cv::event::SimulatorSettings s = sim->getSettings();
+    applySimulatorSettings(s, list);
+    return cv::event::StereoEventSimulator::create(sim->getPlanes(), s);
+}
+
 #endif  // OPENCV_EVENT_COMMON_SIMULATOR_SETTINGS_HPP

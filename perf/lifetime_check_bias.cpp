@@ -1,6 +1,7 @@
 // What LifetimeArrivalCheck says of perfect lifetimes: prints one Markdown table.
 //
-//   lifetime_check_bias [--scenes=boxes,walking,boxes_pair] [--sensor=DAVIS240] [--duration-ms=1000]
+//   lifetime_check_bias [--scenes=boxes,walking,boxes_pair] [--sensor=DAVIS240] [--sensor-set=NAME=VALUE,...]
+//                       [--duration-ms=1000]
 //
 // The simulator's true lifetime and normal flow of every event of the left camera (0 for noise, as a perfect
 // estimator would call it) go through the check, for each scene as built, for its ideal sensor (no threshold
@@ -9,6 +10,7 @@
 // everywhere; what it gives is what an estimator can at best score on recordings of that kind.
 
 #include "command_line.hpp"
+#include "simulator_settings.hpp"
 #include "test_simulator_helpers.hpp"  // perfectLifetimes, shared with the unit tests and design_figures
 
 #include <opencv2/event.hpp>
@@ -91,6 +93,7 @@ int main(int argc, char** argv)
             "{help h      | false                   | print this message}"
             "{scenes      | boxes,walking,boxes_pair | simulator scenes, comma separated}"
             "{sensor      | DAVIS240                | the sensor model the scenes are simulated on (DVS128, DAVIS240, DAVIS346)}"
+            "{sensor-set  |                         | the scenes' sensor settings NAME=VALUE before each row's change, comma separated (SimulatorSettings fields, e.g. blurSigmaPx=0.6)}"
             "{duration-ms | 1000                    | simulated time per row [ms]}";
         ProgramCommandLine cmd(argc, argv, keys, "What LifetimeArrivalCheck says of the simulator's true lifetimes.");
         if (cmd.helpShown())
@@ -98,6 +101,7 @@ int main(int argc, char** argv)
         const double durationUs = cmd.get<double>("duration-ms") * 1000;
         const int sensorModel = sceneSensorModel(cmd.get<std::string>("sensor"));
         const std::vector<std::string> scenes = commaList(cmd.get<std::string>("scenes"));
+        const std::string sensorSettings = cmd.get<std::string>("sensor-set");
 
         const std::vector<Variant> variants = {
             { "as built", [](SimulatorSettings&) {} },
@@ -114,11 +118,12 @@ int main(int argc, char** argv)
         for (const std::string& scene : scenes)
             for (const Variant& v : variants)
             {
-                const Ptr<StereoEventSimulator> built = StereoEventSimulator::create(scene, sensorModel);
+                const Ptr<StereoEventSimulator> built = simulatorWithSettings(scene, sensorModel, sensorSettings);
                 SimulatorSettings s = built->getSettings();
                 v.change(s);
                 const Result r = check(StereoEventSimulator::create(built->getPlanes(), s), durationUs);
-                std::printf("| %s | %s | %.0f | %.2f (%.2f / %.2f) |\n", scene.c_str(), v.name, r.samples, r.median,
+                const std::string label = sensorSettings.empty() ? scene : scene + " (" + sensorSettings + ")";
+                std::printf("| %s | %s | %.0f | %.2f (%.2f / %.2f) |\n", label.c_str(), v.name, r.samples, r.median,
                             r.p25, r.p75);
                 std::fflush(stdout);
             }

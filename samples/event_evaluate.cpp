@@ -114,13 +114,7 @@ int main(int argc, char** argv)
         Size size;
         if (o.input.empty())
         {
-            sim = StereoEventSimulator::create(o.scene, o.sceneModel);
-            if (!o.sensorSettings.empty())
-            {
-                SimulatorSettings settings = sim->getSettings();
-                applySimulatorSettings(settings, o.sensorSettings);
-                sim = StereoEventSimulator::create(sim->getPlanes(), settings);
-            }
+            sim = simulatorWithSettings(o.scene, o.sceneModel, o.sensorSettings);
             size = sim->getSensorSize();
         }
         else

@@ -1,7 +1,7 @@
 // event_lifetime: per-event lifetime and normal flow of any recording (LifetimeEstimator), with pictures of the
 // active events next to the fixed-interval accumulation people use today.
 //
-//   event_lifetime [FILE | --scene=NAME] [--camera=0|1] [--frame-ms=10] [--every-ms=50] [--csv=FILE]
+//   event_lifetime [FILE | --scene=NAME [--duration-ms=1000] [--sensor-set=NAME=VALUE,...]] [--camera=0|1] [--frame-ms=10] [--every-ms=50] [--csv=FILE]
 //                  [--output=DIR] [--sensor=WxH|NAME] [--one-based] [--no-prediction] [--max-ms=T] [--set=NAME=VALUE,...]
 //                  [--min-quality=Q] [--filter=NAME [--filter-set=NAME=VALUE,...]]
 //
@@ -25,6 +25,7 @@
 #include "command_line.hpp"
 #include "sample_pictures.hpp"
 #include "sample_progress.hpp"
+#include "simulator_settings.hpp"
 
 #include <algorithm>
 #include <cstdio>
@@ -38,8 +39,10 @@ namespace {
 
 const char* const keys =
     "{help h        | false           | print this message}"
-    "{@input        |                 | the recording; none: simulate 1 s of --scene}"
+    "{@input        |                 | the recording; none: simulate --scene}"
     "{scene         | moving_line     | simulated scene when no recording is given}"
+    "{duration-ms   | 1000            | length of the simulated scene [ms]}"
+    "{sensor-set    |                 | the simulated scene's sensor settings NAME=VALUE, comma separated (SimulatorSettings fields, e.g. blurSigmaPx=0.6)}"
     "{camera        | 0               | which camera of a stereo recording: 0 left, 1 right}"
     "{frame-ms      | 10              | the fixed window drawn beside the lifetimes [ms]}"
     "{every-ms      | 50              | one picture per this much recording time [ms]}"
@@ -79,14 +82,21 @@ int main(int argc, char** argv)
             sensor = parseSensorSize(cmd.get<std::string>("sensor"));
         if (!utils::fs::createDirectories(output))
             throw std::runtime_error(output + ": cannot create the output folder");
+        const std::string sensorSettings = cmd.get<std::string>("sensor-set");
         if (input.empty())
         {
             const int model = cmd.has("sensor") ? sceneSensorModel(cmd.get<std::string>("sensor")) : SENSOR_DAVIS240;
             input = output + "/" + scene + ".aedat4";
-            std::cerr << "no input given: simulating 1 s of scene \"" << scene << "\" on a " << getSensorModelName(model)
+            const double durationMs = cmd.get<double>("duration-ms");
+            if (!(durationMs > 0))
+                throw std::runtime_error(format("--duration-ms=%g: must be above 0", durationMs));
+            std::cerr << "no input given: simulating " << durationMs << " ms of scene \"" << scene << "\" on a "
+                      << getSensorModelName(model) << (sensorSettings.empty() ? std::string() : " (" + sensorSettings + ")")
                       << " into " << input << "\n";
-            writeSimulatedRecording(StereoEventSimulator::create(scene, model), input, 1e6);
+            writeSimulatedRecording(simulatorWithSettings(scene, model, sensorSettings), input, durationMs * 1000);
         }
+        else if (!sensorSettings.empty())
+            throw std::runtime_error("--sensor-set: only for a simulated scene (--scene), not a recording");
         EventCapture cap;
         cap.set(EVENT_CAP_PROP_SENSOR_WIDTH, sensor.width);
         cap.set(EVENT_CAP_PROP_SENSOR_HEIGHT, sensor.height);
