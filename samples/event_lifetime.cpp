@@ -1,9 +1,10 @@
 // event_lifetime: per-event lifetime and normal flow of any recording (LifetimeEstimator), with pictures of the
 // active events next to the fixed-interval accumulation people use today.
 //
-//   event_lifetime [FILE | --scene=NAME [--duration-ms=1000] [--sensor-set=NAME=VALUE,...]] [--camera=0|1] [--frame-ms=10] [--every-ms=50] [--csv=FILE]
-//                  [--output=DIR] [--sensor=WxH|NAME] [--one-based] [--no-prediction] [--max-ms=T] [--set=NAME=VALUE,...]
-//                  [--min-quality=Q] [--filter=NAME [--filter-set=NAME=VALUE,...]]
+//   event_lifetime [FILE | --scene=NAME [--duration-ms=1000] [--sensor-set=NAME=VALUE,...]] [--camera=0|1]
+//                  [--frame-ms=10] [--every-ms=50] [--csv=FILE] [--output=DIR] [--sensor=WxH|NAME] [--one-based]
+//                  [--no-prediction] [--max-ms=T] [--set=NAME=VALUE,...] [--min-quality=Q]
+//                  [--filter=NAME [--filter-set=NAME=VALUE,...]]
 //
 // Pictures DIR/active_NNNNN.png: left, the events alive at that instant (each lives from its timestamp for
 // its lifetime: the sharp edge image; with --min-quality only those of at least that quality); right, all
