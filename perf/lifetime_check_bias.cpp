@@ -1,7 +1,7 @@
 // What LifetimeArrivalCheck says of perfect lifetimes: prints one Markdown table.
 //
 //   lifetime_check_bias [--scenes=boxes,walking,boxes_pair] [--sensor=DAVIS240] [--sensor-set=NAME=VALUE,...]
-//                       [--duration-ms=1000]
+//                       [--duration-ms=1000] [--effects=false]
 //
 // The simulator's true lifetime and normal flow of every event of the left camera (0 for noise, as a perfect
 // estimator would call it) go through the check, for each scene as built, for its ideal sensor (no threshold
@@ -94,7 +94,8 @@ int main(int argc, char** argv)
             "{scenes      | boxes,walking,boxes_pair | simulator scenes, comma separated}"
             "{sensor      | DAVIS240                | the sensor model the scenes are simulated on (DVS128, DAVIS240, DAVIS346)}"
             "{sensor-set  |                         | the scenes' sensor settings NAME=VALUE before each row's change, comma separated (SimulatorSettings fields, e.g. blurSigmaPx=0.6)}"
-            "{duration-ms | 1000                    | simulated time per row [ms]}";
+            "{duration-ms | 1000                    | simulated time per row [ms]}"
+            "{effects     | true                    | also the rows of the ideal sensor and of each effect alone (false: each scene as built only)}";
         ProgramCommandLine cmd(argc, argv, keys, "What LifetimeArrivalCheck says of the simulator's true lifetimes.");
         if (cmd.helpShown())
             return 0;
@@ -102,6 +103,7 @@ int main(int argc, char** argv)
         const int sensorModel = sceneSensorModel(cmd.get<std::string>("sensor"));
         const std::vector<std::string> scenes = commaList(cmd.get<std::string>("scenes"));
         const std::string sensorSettings = cmd.get<std::string>("sensor-set");
+        const bool effects = cmd.get<bool>("effects");
 
         const std::vector<Variant> variants = {
             { "as built", [](SimulatorSettings&) {} },
@@ -118,6 +120,8 @@ int main(int argc, char** argv)
         for (const std::string& scene : scenes)
             for (const Variant& v : variants)
             {
+                if (!effects && &v != &variants.front())
+                    break;
                 const Ptr<StereoEventSimulator> built = simulatorWithSettings(scene, sensorModel, sensorSettings);
                 SimulatorSettings s = built->getSettings();
                 v.change(s);
