@@ -117,20 +117,22 @@ int main(int argc, char** argv)
             { "ideal + blur 0.8 px", [](SimulatorSettings& s) { idealSensor(s); s.blurSigmaPx = 0.8; } },
         };
         std::cout << "| scene | sensor | samples | median (p25 / p75) |\n|---|---|---|---|\n";
+        const size_t rows = effects ? variants.size() : 1;  // "as built" first
         for (const std::string& scene : scenes)
-            for (const Variant& v : variants)
+        {
+            const std::string label = sensorSettings.empty() ? scene : scene + " (" + sensorSettings + ")";
+            for (size_t k = 0; k < rows; k++)
             {
-                if (!effects && &v != &variants.front())
-                    break;
+                const Variant& v = variants[k];
                 const Ptr<StereoEventSimulator> built = simulatorWithSettings(scene, sensorModel, sensorSettings);
                 SimulatorSettings s = built->getSettings();
                 v.change(s);
                 const Result r = check(StereoEventSimulator::create(built->getPlanes(), s), durationUs);
-                const std::string label = sensorSettings.empty() ? scene : scene + " (" + sensorSettings + ")";
                 std::printf("| %s | %s | %.0f | %.2f (%.2f / %.2f) |\n", label.c_str(), v.name, r.samples, r.median,
                             r.p25, r.p75);
                 std::fflush(stdout);
             }
+        }
         return 0;
     }
     catch (const std::exception& e)

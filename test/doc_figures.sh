@@ -359,9 +359,10 @@ for entry in "walking:simulated \`walking\` on a DVS128 (\`--scene=walking --sen
 done
 # A fan that fires as sparsely as TUM Fan (doc/lifetime.md): the share of the left camera's events with a lifetime
 # and our check, perfect lifetimes' check ("as built"), and our median error against the truth.
-sparseFan=(--scene=fan --sensor=DVS128 --duration-ms=3500 --sensor-set=blurSigmaPx=0.6)
-"$build/perf/lifetime_check_bias" --scenes=fan --sensor=DVS128 --duration-ms=3500 --sensor-set=blurSigmaPx=0.6 \
-  --effects=false > "$work/sparse_fan_bias.txt" 2> /dev/null &
+sparseFanSetting=(--sensor=DVS128 --duration-ms=3500 --sensor-set=blurSigmaPx=0.6)
+sparseFan=(--scene=fan "${sparseFanSetting[@]}")
+"$build/perf/lifetime_check_bias" --scenes=fan "${sparseFanSetting[@]}" --effects=false > "$work/sparse_fan_bias.txt" \
+  2> /dev/null &
 "$samples/event_lifetime" "${sparseFan[@]}" --output="$work/sparse_fan" > "$work/sparse_fan.txt" 2> /dev/null
 fanShare=$(sed -n 's/^\([0-9]*\) events of camera 0: \([0-9]*\) fitted, \([0-9]*\) predicted.*/\1 \2 \3/p' "$work/sparse_fan.txt" \
   | awk '{ printf "%.0f", 100 * ($2 + $3) / $1 }')
@@ -372,7 +373,7 @@ fanError=$("$samples/event_evaluate" "${sparseFan[@]}" --method=lifetime --outpu
 expectProse doc/lifetime.md "ours are $(decimal "$fanError") % off them" "event_evaluate ${sparseFan[*]} --method=lifetime: median error"
 wait
 fanPerfect=$(grep -F '| as built |' "$work/sparse_fan_bias.txt" | awk -F' [|] ' '{ print $4 }' | sed 's/ |$//')
-expectProse doc/lifetime.md "true lifetimes check at $fanPerfect there" "lifetime_check_bias --scenes=fan --sensor=DVS128 --duration-ms=3500 --sensor-set=blurSigmaPx=0.6 --effects=false"
+expectProse doc/lifetime.md "true lifetimes check at $fanPerfect there" "lifetime_check_bias --scenes=fan ${sparseFanSetting[*]} --effects=false"
 # The simulator's scenes against their true lifetimes at quality 0, 0.75 and 0.8 (the same table's first part):
 # "median % (events)".
 qualityCell() {  # qualityCell SCENE Q
