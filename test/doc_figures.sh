@@ -324,20 +324,32 @@ arrival() {  # arrival FILE ARGS...: event_lifetime's check line as the table wr
 }
 # Each recording in both tables: the check at inlierDistance=0 and at the defaults, and in the quality table
 # the lifetimes kept at quality >= 0.75 with the check over them. Entries: FILE:OPTIONS:check-table label:
-# quality-table label.
+# quality-table label (none: the recording is in the check table only).
 for entry in "format_samples/aestream_davis346.aedat4::DAVIS346 sample (aestream, 346 x 260):DAVIS346 sample (aestream)" \
              "stereo_dvs128_tum/Fan_disp8.dat:--sensor=DVS128:TUM Fan (DVS128, \`--sensor=DVS128\`):TUM Fan" \
              "stereo_dvs128_tum/pendulum_left_30cm_2.tsv.txt:--sensor=DVS128:TUM pendulum (DVS128):TUM pendulum" \
              "stereo_dvs128_tum/movingPersons.dat:--sensor=DVS128 --one-based:TUM movingPersons (DVS128, \`--one-based\`):TUM movingPersons" \
-             "format_samples/tonic_sample_dvxplorer.aedat4::DVXplorer sample (tonic):DVXplorer sample (tonic)"; do
+             "format_samples/tonic_sample_dvxplorer.aedat4::DVXplorer sample (tonic):DVXplorer sample (tonic)" \
+             "format_samples/ecpy_test_events_2_mcap::DAVIS346 ROS 2 bag, MCAP (event_camera_py):DAVIS346 ROS 2 bag, MCAP" \
+             "format_samples/ecpy_test_events_1_ros1.bag::640 x 480 ROS 1 bag, EVT 3.0 packets (event_camera_py; its legacy \`EventArray\` twin reads the same):640 x 480 ROS 1 bag" \
+             "format_samples/evt2_sample.raw::Prophesee EVT 2.0 sample (Gen3, 640 x 480):Prophesee EVT 2.0 sample" \
+             "format_samples/evt3_sample.raw::Prophesee EVT 3.0 sample (Gen4, 1280 x 720):Prophesee EVT 3.0 sample" \
+             "format_samples/tonic_sample_ncars.dat:--sensor=304x240:N-CARS sample (ATIS, \`--sensor=304x240\`):" \
+             "format_samples/ecpy_legacy_eventarray_ros2::640 x 480 ROS 2 bag, legacy \`EventArray\`:" \
+             "format_samples/ros2_libcaer_rollover::libcaer ROS 2 bag (640 x 480):"; do
   IFS=: read -r file extra checkLabel qualityLabel <<< "$entry"
   expectPlain doc/lifetime.md "| $checkLabel | $(arrival "$shared/$file" $extra --set=inlierDistance=0) | $(arrival "$shared/$file" $extra) |" \
     "event_lifetime $file $extra, inlierDistance=0 and the defaults: the lifetime check"
+  [ -n "$qualityLabel" ] || continue
   kept=$("$samples/event_lifetime" "$shared/$file" $extra --min-quality=0.75 --output="$work/lifetime" 2> /dev/null \
     | sed -n 's/^quality >= 0.75: [0-9]* of [0-9]* lifetimes (\([0-9.]*\) %)$/\1/p')
   expect doc/lifetime.md "| $qualityLabel | $kept % | $(arrival "$shared/$file" $extra --min-quality=0.75) |" \
     "event_lifetime $file $extra --min-quality=0.75: lifetimes kept, the lifetime check"
 done
+# The legacy ROS 1 bag holds the same recording as the ROS 1 bag of the table (its row says so).
+legacyRos1="$shared/format_samples/ecpy_legacy_eventarray_ros1.bag"
+expectPlain doc/lifetime.md "twin reads the same) | $(arrival "$legacyRos1" --set=inlierDistance=0) | $(arrival "$legacyRos1") |" \
+  "event_lifetime ecpy_legacy_eventarray_ros1.bag, inlierDistance=0 and the defaults: the lifetime check"
 # The check before and after the anti-flicker filter (doc/lifetime.md, "A flickering light"): the events kept and
 # the check over them.
 for entry in "--scene=boxes_flicker:simulated \`boxes_flicker\` (\`--scene=boxes_flicker\`: \`boxes\` lit at 100 Hz)" \
